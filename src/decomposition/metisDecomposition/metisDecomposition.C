@@ -5,7 +5,7 @@
 
 #include "metisDecomposition.H"
 #include "addToRunTimeSelectionTable.H"
-#include "OStringStream.H"
+#include "dictionaryChecks.H"
 
 #include <metis.h>
 
@@ -44,90 +44,38 @@ Foam::metisDecomposition::objectiveNames
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::metisDecomposition::badEntry
-(
-    const word& key,
-    const string& found,
-    const string& allowed
-) const
-{
-    FatalIOErrorInFunction(coeffsDict_)
-        << "Entry '" << key << "' in " << coeffsDict_.name()
-        << " has the value " << found.c_str() << nl
-        << "    allowed: " << allowed.c_str() << nl
-        << exit(FatalIOError);
-
-    ::abort();   // not reached: exit(FatalIOError) does not return
-}
-
-
 void Foam::metisDecomposition::readCoeffs()
 {
+    using namespace dictionaryChecks;
     const dictionary& d = coeffsDict_;
 
-    // Enum's own message does not name the entry: check here instead
-    auto readEnum = [&](const word& key, const auto& names, auto deflt)
-    {
-        const word val(d.getOrDefault<word>(key, names[deflt], keyType::LITERAL));
-        if (!names.found(val))
-        {
-            OStringStream allowed;
-            allowed << "one of " << names.sortedToc();
-            badEntry(key, val, allowed.str());
-        }
-        return names[val];
-    };
-
-    method_ = readEnum("method", algorithmNames, algorithm::kWay);
-    objective_ = readEnum("objective", objectiveNames, objectiveType::cut);
-
+    method_ = getEnum(d, "method", algorithmNames, algorithm::kWay);
+    objective_ = getEnum(d, "objective", objectiveNames, objectiveType::cut);
     const bool kWay = (method_ == algorithm::kWay);
-    const word methodName(algorithmNames[method_]);
 
-    auto readInt = [&](const word& key, label deflt, label lower) -> label
-    {
-        label val = deflt;
-        if (d.found(key, keyType::LITERAL))
-        {
-            ITstream& is = d.lookup(key, keyType::LITERAL);
-            token tok(is);
-            if (!tok.isLabel() || !is.eof())
-            {
-                badEntry(key, is.toString(), "an integer >= " + Foam::name(lower));
-            }
-            val = tok.labelToken();
-        }
-        if (val < lower)
-        {
-            badEntry(key, Foam::name(val), "an integer >= " + Foam::name(lower));
-        }
-        return val;
-    };
-
-    ufactor_ = readInt("ufactor", (kWay ? 30 : 1), 1);
-    niter_ = readInt("niter", 10, 1);
-    ncuts_ = readInt("ncuts", 1, 1);
-    seed_ = readInt("seed", -1, -1);
-
-    contiguous_ = d.getOrDefault<bool>("contiguous", false, keyType::LITERAL);
+    ufactor_ = getLabelAtLeast(d, "ufactor", (kWay ? 30 : 1), 1);
+    niter_ = getLabelAtLeast(d, "niter", 10, 1);
+    ncuts_ = getLabelAtLeast(d, "ncuts", 1, 1);
+    seed_ = getLabelAtLeast(d, "seed", -1, -1);
+    contiguous_ = getAsOrDefault<bool>(d, "contiguous", false, "true or false");
     minimizeConnectivity_ =
-        d.getOrDefault<bool>("minimizeConnectivity", false, keyType::LITERAL);
+        getAsOrDefault<bool>(d, "minimizeConnectivity", false, "true or false");
 
     if (!kWay)
     {
         if (objective_ != objectiveType::cut)
         {
-            badEntry("objective", "volume (with method recursive)",
+            badEntry(d, "objective", "volume (with method recursive)",
                 "cut; the volume objective needs method k-way");
         }
         if (contiguous_)
         {
-            badEntry("contiguous", "true (with method recursive)",
+            badEntry(d, "contiguous", "true (with method recursive)",
                 "false; contiguous subdomains need method k-way");
         }
         if (minimizeConnectivity_)
         {
-            badEntry("minimizeConnectivity", "true (with method recursive)",
+            badEntry(d, "minimizeConnectivity", "true (with method recursive)",
                 "false; minimizeConnectivity needs method k-way");
         }
     }
@@ -135,39 +83,26 @@ void Foam::metisDecomposition::readCoeffs()
     processorWeights_.clear();
     if (d.found("processorWeights", keyType::LITERAL))
     {
-        ITstream& is = d.lookup("processorWeights", keyType::LITERAL);
-        const string found(is.toString());
-        List<scalar> w;
-        try
-        {
-            FatalIOError.throwExceptions();
-            is >> w;
-            FatalIOError.dontThrowExceptions();
-        }
-        catch (const Foam::IOerror&)
-        {
-            FatalIOError.dontThrowExceptions();
-            badEntry("processorWeights", found,
-                "a list of " + Foam::name(nDomains_) + " positive numbers");
-        }
-
+        const string allowed
+        (
+            "a list of numberOfSubdomains = " + Foam::name(nDomains_)
+          + " positive numbers"
+        );
+        const List<scalar> w(getAs<List<scalar>>(d, "processorWeights", allowed));
         if (w.size() != nDomains_)
         {
-            badEntry("processorWeights", found,
-                "a list of numberOfSubdomains = " + Foam::name(nDomains_)
-              + " positive numbers (found " + Foam::name(w.size()) + ")");
+            badEntry(d, "processorWeights", entryText(d, "processorWeights"),
+                allowed + " (found " + Foam::name(w.size()) + ")");
         }
-        scalar sum = 0;
         for (const scalar x : w)
         {
             if (!(x > 0) || !std::isfinite(x))
             {
-                badEntry("processorWeights", found,
-                    "positive, finite numbers only");
+                badEntry(d, "processorWeights",
+                    entryText(d, "processorWeights"), allowed);
             }
-            sum += x;
         }
-        processorWeights_ = w/sum;
+        processorWeights_ = w/sum(w);
     }
 }
 
