@@ -295,7 +295,8 @@ Foam::mpmMeshView::mpmMeshView
     vertices_(vertices),
     shapes_(shapes),
     cellStart_(cellStart),
-    cellVertices_(cellVertices)
+    cellVertices_(cellVertices),
+    pointVertex_(identity(vertices.size()))
 {
     build();
 }

@@ -48,9 +48,12 @@ Foam::mpmMeshView::mpmMeshView(const polyMesh& mesh)
     cellStart_[0] = 0;
     DynamicList<label> cv(8*nC);
 
+    pointVertex_.setSize(pts.size(), -1);
+
     if (dim_ == 3)
     {
         vertices_ = pts;
+        pointVertex_ = identity(pts.size());
         const cellModel& tet = cellModel::ref(cellModel::TET);
         const cellModel& hex = cellModel::ref(cellModel::HEX);
         const cellShapeList& cs = mesh.cellShapes();
@@ -125,6 +128,7 @@ Foam::mpmMeshView::mpmMeshView(const polyMesh& mesh)
             cellStart_[c + 1] = cv.size();
         }
         vertices_.transfer(verts);
+        pointVertex_ = pointToVertex;
     }
     else if (dim_ == 1)
     {
@@ -146,6 +150,16 @@ Foam::mpmMeshView::mpmMeshView(const polyMesh& mesh)
                 std::lower_bound(ux.begin(), ux.end(), x - tol) - ux.begin();
             return min(i, ux.size() - 1);
         };
+        // Only the points on the lowest corner line are vertices
+        forAll(pts, p)
+        {
+            bool corner = true;
+            for (direction d = 0; d < vector::nComponents; ++d)
+            {
+                if (label(d) != a && pts[p][d] > bb.min()[d] + tol) corner = false;
+            }
+            if (corner) pointVertex_[p] = indexOf(pts[p][a]);
+        }
         const labelListList& cp = mesh.cellPoints();
         forAll(cp, c)
         {

@@ -1,0 +1,145 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "mpmGridBoundary.H"
+#include "mpmMeshView.H"
+#include "polyMesh.H"
+#include "emptyPolyPatch.H"
+#include "wedgePolyPatch.H"
+#include "processorPolyPatch.H"
+#include "dictionaryChecks.H"
+#include "SubField.H"
+#include "Map.H"
+
+const Foam::Enum<Foam::mpmGridBoundary::bcType>
+Foam::mpmGridBoundary::bcTypeNames
+({
+    { bcType::free, "free" },
+    { bcType::fixed, "fixed" },
+    { bcType::slip, "slip" },
+});
+
+
+void Foam::mpmGridBoundary::set
+(
+    const label v,
+    const List<vector>& slipNormals,
+    const bool fixed
+)
+{
+    tensor P(I);
+    if (fixed)
+    {
+        P = tensor::zero;
+    }
+    else
+    {
+        // Gram-Schmidt: remove each independent normal direction once
+        List<vector> basis;
+        for (const vector& n0 : slipNormals)
+        {
+            vector n = n0;
+            for (const vector& b : basis) n -= (n & b)*b;
+            const scalar len = mag(n);
+            if (len > 1e-6*max(mag(n0), VSMALL))
+            {
+                basis.append(n/len);
+            }
+        }
+        for (const vector& b : basis) P -= b*b;
+    }
+    vertices_.append(v);
+    projection_.append(P);
+}
+
+
+Foam::mpmGridBoundary::mpmGridBoundary
+(
+    const polyMesh& mesh,
+    const mpmMeshView& view,
+    const dictionary& dict
+)
+{
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    const labelList& pointVertex = view.pointVertex();
+
+    // Every key must match a patch
+    for (const entry& e : dict)
+    {
+        bool matched = false;
+        for (const polyPatch& pp : patches)
+        {
+            if (e.keyword().match(pp.name())) { matched = true; break; }
+        }
+        if (!matched)
+        {
+            OStringStream allowed;
+            allowed << "patch names or patterns of " << patches.names();
+            dictionaryChecks::badEntry(dict, e.keyword(),
+                "(a patch name matching no patch)", allowed.str());
+        }
+        if (!e.isDict())
+        {
+            dictionaryChecks::badEntry(dict, e.keyword(),
+                dictionaryChecks::entryText(dict, e.keyword()),
+                "a sub-dictionary { type fixed | slip | free; }");
+        }
+    }
+
+    const label nV = view.nVertices();
+    List<DynamicList<vector>> normals(nV);
+    List<bool> fixed(nV, false);
+    List<bool> touched(nV, false);
+
+    for (const polyPatch& pp : patches)
+    {
+        if
+        (
+            isA<emptyPolyPatch>(pp) || isA<wedgePolyPatch>(pp)
+         || isA<processorPolyPatch>(pp)
+        )
+        {
+            continue;
+        }
+        const dictionary* pd = dict.findDict(pp.name(), keyType::REGEX);
+        if (!pd) continue;
+        const bcType t = dictionaryChecks::getEnum
+        (
+            *pd, "type", bcTypeNames, bcType::free
+        );
+        if (t == bcType::free) continue;
+
+        // Per vertex: the area-weighted normal of this patch
+        Map<vector> patchNormal;
+        forAll(pp, i)
+        {
+            const face& f = pp[i];
+            const vector a = pp.faceAreas()[i];
+            for (const label p : f)
+            {
+                const label v = pointVertex[p];
+                if (v < 0) continue;
+                touched[v] = true;
+                if (t == bcType::fixed) fixed[v] = true;
+                else patchNormal(v) += a;
+            }
+        }
+        forAllConstIters(patchNormal, iter)
+        {
+            normals[iter.key()].append(iter.val()/max(mag(iter.val()), VSMALL));
+        }
+    }
+
+    forAll(touched, v)
+    {
+        if (touched[v])
+        {
+            set(v, normals[v], fixed[v]);
+        }
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,81 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "mpmParticles.H"
+#include "error.H"
+#include "SubList.H"
+
+void Foam::mpmParticles::clear()
+{
+    x.clear(); v.clear(); B.clear(); F.clear(); m.clear(); V0.clear();
+    V.clear(); sigma.clear(); psi.clear(); material.clear(); cell.clear();
+}
+
+
+void Foam::mpmParticles::append
+(
+    const vector& position,
+    const vector& velocity,
+    const tensor& defGrad,
+    const scalar mass,
+    const scalar referenceVolume,
+    const label materialIndex,
+    const label celli
+)
+{
+    x.append(position);
+    v.append(velocity);
+    B.append(tensor::zero);
+    F.append(defGrad);
+    m.append(mass);
+    V0.append(referenceVolume);
+    V.append(det(defGrad)*referenceVolume);
+    sigma.append(symmTensor::zero);
+    psi.append(0);
+    material.append(materialIndex);
+    cell.append(celli);
+}
+
+
+namespace
+{
+template<class T>
+void permute(Foam::DynamicList<T>& a, const Foam::labelList& order)
+{
+    Foam::List<T> b(a.size());
+    forAll(order, i) b[i] = a[order[i]];
+    forAll(order, i) a[i] = b[i];
+}
+}
+
+
+Foam::labelList Foam::mpmParticles::sortByMaterial(const label nMaterials)
+{
+    labelList start(nMaterials + 1, Zero);
+    for (const label k : material)
+    {
+        if (k < 0 || k >= nMaterials)
+        {
+            FatalErrorInFunction
+                << "Particle material index " << k << " is not one of the "
+                << nMaterials << " materials" << exit(FatalError);
+        }
+        ++start[k + 1];
+    }
+    for (label k = 0; k < nMaterials; ++k) start[k + 1] += start[k];
+
+    labelList order(size());
+    labelList fill(SubList<label>(start, nMaterials));
+    forAll(material, p) order[fill[material[p]]++] = p;
+
+    permute(x, order); permute(v, order); permute(B, order); permute(F, order);
+    permute(m, order); permute(V0, order); permute(V, order);
+    permute(sigma, order); permute(psi, order); permute(material, order);
+    permute(cell, order);
+    return start;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,289 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "mpmSolver.H"
+#include "dictionaryChecks.H"
+#include <algorithm>
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::mpmSolver::readSettings(const dictionary& dict)
+{
+    using namespace dictionaryChecks;
+
+    gravity_ = mesh_.inPlane
+    (
+        getAsOrDefault<vector>(dict, "gravity", vector::zero, "a vector (gx gy gz)")
+    );
+    CFL_ = getPositive(dict, "CFL", 0.5);
+    if (CFL_ > 1)
+    {
+        badEntry(dict, "CFL", Foam::name(CFL_), "a number 0 < CFL <= 1");
+    }
+    maxDeltaT_ = getPositive(dict, "maxDeltaT", 1e30);
+
+    const dictionary* md = dict.findDict("materials", keyType::LITERAL);
+    if (!md || md->empty())
+    {
+        missingEntry(dict, "materials",
+            "a sub-dictionary with one sub-dictionary per material,"
+            " e.g. materials { steel { type linearElastic; rho 7800;"
+            " E 2e11; nu 0.3; } }");
+    }
+    for (const entry& e : *md)
+    {
+        if (!e.isDict())
+        {
+            badEntry(*md, e.keyword(), entryText(*md, e.keyword()),
+                "a material sub-dictionary { type ...; rho ...; E ...; nu ...; }");
+        }
+        materials_.append(mpmMaterial::New(e.keyword(), e.dict()));
+    }
+}
+
+
+void Foam::mpmSolver::updateStress(mpmParticles& P) const
+{
+    forAll(materials_, k)
+    {
+        const label b = materialStart_[k];
+        const label n = materialStart_[k + 1] - b;
+        if (n == 0) continue;
+        SubList<symmTensor> sigma(P.sigma, n, b);
+        SubList<scalar> psi(P.psi, n, b);
+        materials_[k].stress(SubList<tensor>(P.F, n, b), sigma, psi);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
+
+Foam::mpmSolver::mpmSolver
+(
+    const mpmMeshView& mesh,
+    const dictionary& dict,
+    const mpmGridBoundary& boundary
+)
+:
+    mesh_(mesh),
+    kernel_(mpmKernel::New(dict, mesh)),
+    transfer_(mpmTransfer::New(dict, mesh)),
+    boundary_(boundary),
+    gravity_(Zero),
+    CFL_(0.5),
+    maxDeltaT_(1e30),
+    hMin_(*std::min_element(mesh.vertexSize().begin(), mesh.vertexSize().end())),
+    grid_(mesh.nVertices())
+{
+    readSettings(dict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::label Foam::mpmSolver::materialIndex
+(
+    const word& name,
+    const dictionary& dict
+) const
+{
+    forAll(materials_, k)
+    {
+        if (materials_[k].name() == name) return k;
+    }
+    wordList names(materials_.size());
+    forAll(materials_, k) names[k] = materials_[k].name();
+    OStringStream allowed;
+    allowed << "one of the materials of constant/mpmProperties " << names;
+    dictionaryChecks::badEntry(dict, "material", name, allowed.str());
+    return -1;
+}
+
+
+void Foam::mpmSolver::initialise(mpmParticles& P)
+{
+    materialStart_ = P.sortByMaterial(materials_.size());
+    forAll(P.x, p)
+    {
+        const label c = mesh_.findCell(P.x[p], P.cell[p]);
+        if (c < 0)
+        {
+            FatalErrorInFunction
+                << "Particle " << p << " at " << P.x[p]
+                << " lies outside the mesh" << exit(FatalError);
+        }
+        P.cell[p] = c;
+        P.V[p] = det(P.F[p])*P.V0[p];
+    }
+    updateStress(P);
+}
+
+
+Foam::scalar Foam::mpmSolver::deltaT(const mpmParticles& P) const
+{
+    scalar cMax = 0;
+    forAll(materials_, k)
+    {
+        if (materialStart_[k + 1] > materialStart_[k])
+        {
+            cMax = max(cMax, materials_[k].waveSpeed());
+        }
+    }
+    scalar vMax2 = 0;
+    for (const vector& v : P.v) vMax2 = max(vMax2, magSqr(v));
+    const scalar speed = cMax + std::sqrt(vMax2);
+    return min(maxDeltaT_, speed > 0 ? CFL_*hMin_/speed : maxDeltaT_);
+}
+
+
+bool Foam::mpmSolver::step(mpmParticles& P, const scalar dt)
+{
+    const label nP = P.size();
+    const List<vector>& xv = mesh_.vertices();
+    failure_.clear();
+
+    // 1. Locate (walk from the previous cell)
+    for (label p = 0; p < nP; ++p)
+    {
+        const label c = mesh_.findCell(P.x[p], P.cell[p]);
+        if (c < 0)
+        {
+            failure_ = "particle " + Foam::name(p) + " at "
+                + Foam::name(P.x[p]) + " has left the mesh";
+            return false;
+        }
+        P.cell[p] = c;
+    }
+
+    // Weights, active vertices
+    kernel_->compute(P.x, P.cell, kw_);
+    grid_.activate(kw_);
+
+    // 2. P2G: mass and momentum
+    transfer_->p2g(P, kw_, grid_);
+
+    // 3.-5. Internal (2.8) and gravity (2.9) forces
+    const bool gravity = magSqr(gravity_) > 0;
+    for (label p = 0; p < nP; ++p)
+    {
+        const symmTensor Vs = P.V[p]*P.sigma[p];
+        const vector mg = P.m[p]*gravity_;
+        for (label k = kw_.start[p]; k < kw_.start[p + 1]; ++k)
+        {
+            const label i = kw_.vertex[k];
+            grid_.force[i] -= (Vs & kw_.gradW[k]);
+            if (gravity) grid_.force[i] += kw_.w[k]*mg;
+        }
+    }
+
+    // 6. Grid update (2.11) and boundary conditions
+    const scalar tiny = VSMALL;
+    for (const label i : grid_.active)
+    {
+        const scalar m = grid_.mass[i];
+        if (m > tiny)
+        {
+            grid_.velocity[i] /= m;
+            grid_.newVelocity[i] =
+                mesh_.inPlane(grid_.velocity[i] + (dt/m)*grid_.force[i]);
+        }
+        else
+        {
+            grid_.velocity[i] = Zero;
+            grid_.newVelocity[i] = Zero;
+        }
+    }
+    boundary_.apply(grid_.isActive, grid_.newVelocity);
+
+    for (const label i : grid_.active)
+    {
+        if (!std::isfinite(magSqr(grid_.newVelocity[i])))
+        {
+            failure_ = "non-finite grid velocity at vertex " + Foam::name(i)
+                + " at " + Foam::name(xv[i]);
+            return false;
+        }
+    }
+
+    // 8. Deformation gradients (2.15), checked before anything changes
+    Fnew_.setSize(nP);
+    for (label p = 0; p < nP; ++p)
+    {
+        tensor gradV(Zero);
+        for (label k = kw_.start[p]; k < kw_.start[p + 1]; ++k)
+        {
+            gradV += grid_.newVelocity[kw_.vertex[k]]*kw_.gradW[k];
+        }
+        Fnew_[p] = (I + dt*gradV) & P.F[p];
+        const scalar J = det(Fnew_[p]);
+        if (!(J > 0) || !std::isfinite(J))
+        {
+            failure_ = "particle " + Foam::name(p) + " at "
+                + Foam::name(P.x[p]) + " would invert: det F = "
+                + Foam::name(J) + " (time step too large, or the material"
+                " is crushed)";
+            return false;
+        }
+    }
+
+    // Positions (2.13): x_p + dt sum w v~_i (linear reproduction)
+    for (label p = 0; p < nP; ++p)
+    {
+        vector vg(Zero);
+        for (label k = kw_.start[p]; k < kw_.start[p + 1]; ++k)
+        {
+            vg += kw_.w[k]*grid_.newVelocity[kw_.vertex[k]];
+        }
+        P.x[p] += dt*vg;
+    }
+
+    // 7. G2P velocities (and B)
+    transfer_->g2p(kw_, grid_, P);
+
+    // 9., 10. Volume (2.16) and stress (2.10)
+    for (label p = 0; p < nP; ++p)
+    {
+        P.F[p] = Fnew_[p];
+        P.V[p] = det(P.F[p])*P.V0[p];
+    }
+    updateStress(P);
+
+    return true;
+}
+
+
+Foam::mpmSolver::totals Foam::mpmSolver::conservation
+(
+    const mpmParticles& P
+) const
+{
+    totals t{0, Zero, Zero, 0, 0, 0};
+    const bool affine = transfer_->affine();
+    forAll(P.x, p)
+    {
+        const scalar m = P.m[p];
+        t.mass += m;
+        t.momentum += m*P.v[p];
+        t.angularMomentum += P.x[p] ^ (m*P.v[p]);
+        if (affine)
+        {
+            // Definition 2.2.4: sum_p m_p (B_p)^T : epsilon
+            const tensor& B = P.B[p];
+            t.angularMomentum += m*vector
+            (
+                B.zy() - B.yz(),
+                B.xz() - B.zx(),
+                B.yx() - B.xy()
+            );
+        }
+        t.kinetic += 0.5*m*magSqr(P.v[p]);
+        t.strain += P.V0[p]*P.psi[p];
+        t.gravitational -= m*(gravity_ & P.x[p]);
+    }
+    return t;
+}
+
+
+// ************************************************************************* //
