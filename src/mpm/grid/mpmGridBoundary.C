@@ -37,18 +37,19 @@ void Foam::mpmGridBoundary::set
     else
     {
         // Gram-Schmidt: remove each independent normal direction once
-        List<vector> basis;
+        FixedList<vector, 3> basis;
+        label nb = 0;
         for (const vector& n0 : slipNormals)
         {
             vector n = n0;
-            for (const vector& b : basis) n -= (n & b)*b;
+            for (label j = 0; j < nb; ++j) n -= (n & basis[j])*basis[j];
             const scalar len = mag(n);
-            if (len > 1e-6*max(mag(n0), VSMALL))
+            if (nb < 3 && len > 1e-6*max(mag(n0), VSMALL))
             {
-                basis.append(n/len);
+                basis[nb++] = n/len;
             }
         }
-        for (const vector& b : basis) P -= b*b;
+        for (label j = 0; j < nb; ++j) P -= basis[j]*basis[j];
     }
     vertices_.append(v);
     projection_.append(P);

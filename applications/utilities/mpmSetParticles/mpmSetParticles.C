@@ -1,0 +1,400 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+-------------------------------------------------------------------------------
+Application
+    mpmSetParticles
+
+Group
+    mpmFoam utilities
+
+Description
+    Seeds the material points of an MPM case from system/mpmSetParticlesDict
+    and writes them as the lagrangian cloud of the start time (replacing
+    any cloud there).  Regions are filled on a lattice of the given spacing
+    (particle volume spacing^dim: per unit depth in 2D, per unit area in
+    1D) or with perCell^dim particles per cell (perCell^2 on triangles; not
+    for tetrahedra), each with a material of constant/mpmProperties, a
+    velocity (uniform, plus an optional sine profile) and an initial
+    deformation gradient.
+
+Usage
+    system/mpmSetParticlesDict:
+    \verbatim
+        regions
+        (
+            bar
+            {
+                type        box;            // box | sphere | cylinder | cellZone
+                min         (0 0 0);        // box
+                max         (25 1 1);
+                // centre (0 0 0); radius 0.2;            sphere, cylinder
+                // axis (0 0 1);                          cylinder
+                // zone  solid;                           cellZone
+                material    steel;
+                spacing     0.5;            // or: perCell 2;
+                velocity    (0 0 0);        // optional, default 0
+                velocitySine                // optional: + A sin(k . x)
+                {
+                    amplitude   (0.75 0 0);
+                    wavenumber  (0.0628319 0 0);
+                }
+                F           (1 0 0 0 1 0 0 0 1);   // optional, default I
+            }
+        );
+    \endverbatim
+    A region whose particles would lie outside the mesh, an unknown
+    material or type, a spacing <= 0 or perCell < 1 stop with a FatalIOError
+    naming the entry.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "mpmMeshView.H"
+#include "mpmSolver.H"
+#include "mpmCloudIO.H"
+#include "dictionaryChecks.H"
+#include "cellZoneMesh.H"
+#include "cloud.H"
+
+using namespace Foam;
+
+namespace
+{
+
+enum class regionType { box, sphere, cylinder, cellZone };
+const Enum<regionType> regionTypeNames
+({
+    { regionType::box, "box" },
+    { regionType::sphere, "sphere" },
+    { regionType::cylinder, "cylinder" },
+    { regionType::cellZone, "cellZone" },
+});
+
+struct region
+{
+    regionType type;
+    vector lo, hi, centre, axis;
+    scalar radius;
+    labelHashSet zoneCells;
+
+    bool inside(const vector& x, const label celli) const
+    {
+        switch (type)
+        {
+            case regionType::box:
+                return x.x() >= lo.x() && x.y() >= lo.y() && x.z() >= lo.z()
+                    && x.x() <= hi.x() && x.y() <= hi.y() && x.z() <= hi.z();
+            case regionType::sphere:
+                return magSqr(x - centre) <= radius*radius;
+            case regionType::cylinder:
+            {
+                const vector d = x - centre;
+                return magSqr(d - (d & axis)*axis) <= radius*radius;
+            }
+            case regionType::cellZone:
+                return zoneCells.found(celli);
+        }
+        return false;
+    }
+};
+
+} // End anonymous namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Seed MPM particles from system/mpmSetParticlesDict into the"
+        " lagrangian cloud of the start time"
+    );
+    argList::noParallel();
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    using namespace dictionaryChecks;
+
+    IOdictionary mpmProperties
+    (
+        IOobject("mpmProperties", runTime.constant(), mesh,
+            IOobject::MUST_READ, IOobject::NO_WRITE)
+    );
+    IOdictionary setDict
+    (
+        IOobject("mpmSetParticlesDict", runTime.system(), mesh,
+            IOobject::MUST_READ, IOobject::NO_WRITE)
+    );
+    const word cloudName
+    (
+        mpmProperties.getOrDefault<word>("cloudName", "mpmCloud")
+    );
+
+    const mpmMeshView view(mesh);
+    mpmSolver solver(view, mpmProperties, mpmGridBoundary());
+    const label dim = view.dim();
+
+    // Mid-plane of the directions that are not solved (2D, 1D)
+    const tensor Q = view.offAxes();
+    const vector mid = Q & mesh.bounds().centre();
+    // Cell measure in the solved dimensions
+    scalar depth = 1;
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (Q(d, d) > 0) depth *= mesh.bounds().span()[d];
+    }
+
+    mpmParticles P;
+    const entry* re = setDict.findEntry("regions", keyType::LITERAL);
+    if (!re || !re->isStream())
+    {
+        missingEntry(setDict, "regions", "a list of region dictionaries ( name { type box; ... } ... )");
+    }
+    const PtrList<entry> regions(re->stream());
+
+    for (const entry& e : regions)
+    {
+        if (!e.isDict())
+        {
+            badEntry(setDict, "regions", e.keyword(), "name { type ...; } entries");
+        }
+        const dictionary& d = e.dict();
+        region r;
+        r.type = getEnum(d, "type", regionTypeNames, regionType::box);
+        switch (r.type)
+        {
+            case regionType::box:
+                r.lo = getAs<vector>(d, "min", "a point (x y z)");
+                r.hi = getAs<vector>(d, "max", "a point (x y z)");
+                break;
+            case regionType::sphere:
+            case regionType::cylinder:
+                r.centre = getAs<vector>(d, "centre", "a point (x y z)");
+                r.radius = getPositive(d, "radius", 1);
+                if (r.type == regionType::cylinder)
+                {
+                    r.axis = getAs<vector>(d, "axis", "a direction (x y z)");
+                    if (mag(r.axis) < VSMALL)
+                    {
+                        badEntry(d, "axis", "(0 0 0)", "a non-zero direction");
+                    }
+                    r.axis /= mag(r.axis);
+                }
+                break;
+            case regionType::cellZone:
+            {
+                const word zone(getAs<word>(d, "zone", "the name of a cellZone"));
+                const label zi = mesh.cellZones().findZoneID(zone);
+                if (zi < 0)
+                {
+                    OStringStream allowed;
+                    allowed << "one of the cellZones " << mesh.cellZones().names();
+                    badEntry(d, "zone", zone, allowed.str());
+                }
+                r.zoneCells.insert(mesh.cellZones()[zi]);
+                break;
+            }
+        }
+
+        const label mat = solver.materialIndex
+        (
+            getAs<word>(d, "material", "a material of constant/mpmProperties"), d
+        );
+        const scalar rho = solver.materials()[mat].rho();
+        const vector U0 = getAsOrDefault<vector>(d, "velocity", Zero, "a vector");
+        const tensor F0 = getAsOrDefault<tensor>(d, "F", tensor(I), "a tensor (xx xy xz yx yy yz zx zy zz)");
+        if (!(det(F0) > 0))
+        {
+            badEntry(d, "F", Foam::name(F0), "a deformation gradient with det F > 0");
+        }
+        vector sineA(Zero), sineK(Zero);
+        if (const dictionary* sd = d.findDict("velocitySine", keyType::LITERAL))
+        {
+            sineA = getAs<vector>(*sd, "amplitude", "a vector");
+            sineK = getAs<vector>(*sd, "wavenumber", "a vector [1/m]");
+        }
+        auto velocity = [&](const vector& x)
+        {
+            return view.inPlane(U0 + sineA*std::sin(sineK & x));
+        };
+
+        const bool hasSpacing = d.found("spacing", keyType::LITERAL);
+        const bool hasPerCell = d.found("perCell", keyType::LITERAL);
+        if (hasSpacing == hasPerCell)
+        {
+            missingEntry(d, "spacing",
+                "exactly one of 'spacing' (> 0) and 'perCell' (integer >= 1)");
+        }
+
+        const label before = P.size();
+        label outside = 0;
+        vector firstOutside(Zero);
+
+        if (hasSpacing)
+        {
+            const scalar s = getPositive(d, "spacing", 1);
+            // Lattice over the region's bounds, clipped to the mesh bounds
+            boundBox bb(mesh.bounds());
+            if (r.type == regionType::box)
+            {
+                bb = boundBox(max(r.lo, bb.min()), min(r.hi, bb.max()));
+                // Particles asked for outside the mesh are an error
+                for (label a = 0; a < dim; ++a)
+                {
+                    const label k = view.axis(a);
+                    if
+                    (
+                        r.lo[k] < mesh.bounds().min()[k] - SMALL
+                     || r.hi[k] > mesh.bounds().max()[k] + SMALL
+                    )
+                    {
+                        OStringStream found, allowed;
+                        found << "min " << r.lo << " max " << r.hi;
+                        allowed << "a box inside the mesh bounds "
+                            << mesh.bounds();
+                        badEntry(d, "min", found.str(), allowed.str());
+                    }
+                }
+            }
+            else if (r.type != regionType::cellZone)
+            {
+                bb = boundBox(r.centre - vector::uniform(r.radius), r.centre + vector::uniform(r.radius));
+            }
+            label n[3] = {1, 1, 1};
+            for (label a = 0; a < dim; ++a)
+            {
+                const label k = view.axis(a);
+                n[a] = max(label(0), label(std::floor((bb.max()[k] - bb.min()[k])/s + 1e-9)));
+            }
+            label guess = 0;
+            for (label i = 0; i < n[0]; ++i)
+            for (label j = 0; j < (dim > 1 ? n[1] : 1); ++j)
+            for (label l = 0; l < (dim > 2 ? n[2] : 1); ++l)
+            {
+                vector x(mid);
+                const label idx[3] = {i, j, l};
+                for (label a = 0; a < dim; ++a)
+                {
+                    const label k = view.axis(a);
+                    x[k] = bb.min()[k] + (idx[a] + 0.5)*s;
+                }
+                const label c = view.findCell(x, guess);
+                if (!r.inside(x, c)) continue;
+                if (c < 0)
+                {
+                    if (!outside) firstOutside = x;
+                    ++outside;
+                    continue;
+                }
+                guess = c;
+                const scalar V0 = std::pow(s, dim);
+                P.append(x, velocity(x), F0, rho*V0, V0, mat, c);
+            }
+        }
+        else
+        {
+            const label N = getLabelAtLeast(d, "perCell", 1, 1);
+            mpmMeshView::shapeValues sv;
+            for (label c = 0; c < view.nCells(); ++c)
+            {
+                const vector cc = (I - Q) & mesh.cellCentres()[c];
+                if (!r.inside(cc + mid, c)) continue;
+                const mpmMeshView::shapeType st = view.shape(c);
+                if (st == mpmMeshView::TET)
+                {
+                    badEntry(d, "perCell", Foam::name(N),
+                        "'spacing' on tetrahedral meshes (perCell takes"
+                        " segments, triangles, quads and hexes)");
+                }
+                const scalar Vc = mesh.cellVolumes()[c]/depth;
+                DynamicList<vector> pts;
+                const labelList& cv = view.cellVertices();
+                const label b = view.cellBegin(c);
+                auto vtx = [&](label i) { return view.vertices()[cv[b + i]]; };
+                if (st == mpmMeshView::TRIANGLE)
+                {
+                    // Centroids of the N^2 sub-triangles
+                    for (label i = 0; i < N; ++i)
+                    for (label j = 0; i + j < N; ++j)
+                    {
+                        const scalar l1 = (i + 1.0/3)/N, l2 = (j + 1.0/3)/N;
+                        pts.append(vtx(0) + l1*(vtx(1) - vtx(0)) + l2*(vtx(2) - vtx(0)));
+                        if (i + j + 1 < N)
+                        {
+                            const scalar m1 = (i + 2.0/3)/N, m2 = (j + 2.0/3)/N;
+                            pts.append(vtx(0) + m1*(vtx(1) - vtx(0)) + m2*(vtx(2) - vtx(0)));
+                        }
+                    }
+                }
+                else
+                {
+                    // Lattice in reference coordinates (segment/quad/hex)
+                    const label nv = mpmMeshView::nShapeVertices(st);
+                    for (label i = 0; i < N; ++i)
+                    for (label j = 0; j < (dim > 1 ? N : 1); ++j)
+                    for (label l = 0; l < (dim > 2 ? N : 1); ++l)
+                    {
+                        const scalar xi[3] = {(i + 0.5)/N, (j + 0.5)/N, (l + 0.5)/N};
+                        vector x(Zero);
+                        if (st == mpmMeshView::SEGMENT)
+                        {
+                            x = (1 - xi[0])*vtx(0) + xi[0]*vtx(1);
+                        }
+                        else
+                        {
+                            static const scalar ref[8][3] =
+                            {
+                                {0,0,0},{1,0,0},{1,1,0},{0,1,0},
+                                {0,0,1},{1,0,1},{1,1,1},{0,1,1}
+                            };
+                            for (label v = 0; v < nv; ++v)
+                            {
+                                scalar w = 1;
+                                for (label a = 0; a < dim; ++a)
+                                {
+                                    w *= ref[v][a] ? xi[a] : 1 - xi[a];
+                                }
+                                x += w*vtx(v);
+                            }
+                        }
+                        pts.append(x);
+                    }
+                }
+                for (vector x : pts)
+                {
+                    x = ((I - Q) & x) + mid;
+                    const scalar V0 = Vc/pts.size();
+                    P.append(x, velocity(x), F0, rho*V0, V0, mat, c);
+                }
+            }
+        }
+
+        if (outside)
+        {
+            OStringStream found, allowed;
+            found << outside << " particles outside the mesh, the first at "
+                << firstOutside;
+            allowed << "regions inside the mesh, bounds " << mesh.bounds();
+            badEntry(d, "type", found.str(), allowed.str());
+        }
+        if (P.size() == before)
+        {
+            WarningInFunction
+                << "Region " << e.keyword() << " holds no particle" << endl;
+        }
+        Info<< "Region " << e.keyword() << ": " << P.size() - before
+            << " particles of material "
+            << solver.materials()[mat].name() << nl;
+    }
+
+    solver.initialise(P);
+    mpmCloudIO::write(mesh, cloudName, P);
+    Info<< nl << "Wrote " << P.size() << " particles to "
+        << runTime.timePath()/cloud::prefix/cloudName << nl << "End" << nl;
+
+    return 0;
+}
+
+// ************************************************************************* //

@@ -1,0 +1,88 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "mpmMaterial.H"
+#include "dictionaryChecks.H"
+
+#include <cmath>
+
+namespace Foam
+{
+    defineTypeNameAndDebug(mpmMaterial, 0);
+    defineRunTimeSelectionTable(mpmMaterial, dictionary);
+}
+
+
+namespace
+{
+
+//- Mandatory entry: a finite number > 0
+Foam::scalar readPositive(const Foam::dictionary& dict, const Foam::word& key)
+{
+    const Foam::string allowed("a finite number > 0");
+    const Foam::scalar val =
+        Foam::dictionaryChecks::getAs<Foam::scalar>(dict, key, allowed);
+    if (!(val > 0) || !std::isfinite(val))
+    {
+        Foam::dictionaryChecks::badEntry(dict, key, Foam::name(val), allowed);
+    }
+    return val;
+}
+
+} // End anonymous namespace
+
+
+Foam::mpmMaterial::mpmMaterial(const word& name, const dictionary& dict)
+:
+    name_(name),
+    rho_(readPositive(dict, "rho")),
+    E_(readPositive(dict, "E")),
+    nu_(0),
+    lambda_(0),
+    mu_(0)
+{
+    // nu = 0.5 is incompressible (lambda infinite), nu <= -1 makes the
+    // shear modulus non-positive
+    const string allowed("-1 < nu < 0.5");
+    nu_ = dictionaryChecks::getAs<scalar>(dict, "nu", allowed);
+    if (!(nu_ > -1 && nu_ < 0.5))
+    {
+        dictionaryChecks::badEntry(dict, "nu", Foam::name(nu_), allowed);
+    }
+
+    lambda_ = E_*nu_/((1 + nu_)*(1 - 2*nu_));
+    mu_ = E_/(2*(1 + nu_));
+}
+
+
+Foam::autoPtr<Foam::mpmMaterial> Foam::mpmMaterial::New
+(
+    const word& name,
+    const dictionary& dict
+)
+{
+    OStringStream allowed;
+    allowed << "one of " << dictionaryConstructorTablePtr_->sortedToc();
+    const word type
+    (
+        dictionaryChecks::getAs<word>(dict, "type", allowed.str())
+    );
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(type);
+    if (!cstrIter.found())
+    {
+        dictionaryChecks::badEntry(dict, "type", type, allowed.str());
+    }
+    Info<< "MPM material " << name << ": " << type << endl;
+    return cstrIter()(name, dict);
+}
+
+
+Foam::scalar Foam::mpmMaterial::waveSpeed() const
+{
+    return std::sqrt((lambda_ + 2*mu_)/rho_);
+}
+
+
+// ************************************************************************* //
