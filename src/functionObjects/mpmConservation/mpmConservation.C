@@ -1,0 +1,102 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "mpmConservation.H"
+#include "mpmState.H"
+#include "fvMesh.H"
+#include "Time.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(mpmConservation, 0);
+    addToRunTimeSelectionTable(functionObject, mpmConservation, dictionary);
+}
+}
+
+
+Foam::functionObjects::mpmConservation::mpmConservation
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict)
+{
+    read(dict);
+}
+
+
+bool Foam::functionObjects::mpmConservation::execute()
+{
+    if (!mesh_.foundObject<mpmState>("mpmState"))
+    {
+        FatalErrorInFunction
+            << "mpmConservation '" << name() << "' needs an MPM solver"
+            << " (umlsMpmFoam); none is running" << exit(FatalError);
+    }
+    const mpmState& state = mesh_.lookupObject<mpmState>("mpmState");
+    const mpmParticles& P = state.particles();
+    const mpmSolver::totals t = state.solver().conservation(P);
+
+    vector xCM(Zero);
+    forAll(P.x, p) xCM += P.m[p]*P.x[p];
+    xCM /= max(t.mass, VSMALL);
+    const scalar total = t.kinetic + t.strain + t.gravitational;
+
+    setResult("mass", t.mass);
+    setResult("xCM", xCM.x());
+    setResult("yCM", xCM.y());
+    setResult("zCM", xCM.z());
+    setResult("px", t.momentum.x());
+    setResult("py", t.momentum.y());
+    setResult("pz", t.momentum.z());
+    setResult("Lx", t.angularMomentum.x());
+    setResult("Ly", t.angularMomentum.y());
+    setResult("Lz", t.angularMomentum.z());
+    setResult("kinetic", t.kinetic);
+    setResult("strain", t.strain);
+    setResult("gravitational", t.gravitational);
+    setResult("total", total);
+
+    if (Pstream::master())
+    {
+        if (!file_)
+        {
+            const fileName dir
+            (
+                time_.globalPath()/functionObject::outputPrefix/name()
+               /time_.timeName(time_.startTime().value())
+            );
+            mkDir(dir);
+            file_.reset(new OFstream(dir/(name() + ".dat")));
+            file_().precision(16);
+            file_()
+                << "# MPM conservation; 2D: per unit depth, 1D: per unit area"
+                << nl
+                << "# t [s]\tmass [kg]\txCM [m]\tyCM [m]\tzCM [m]"
+                << "\tpx [kg m/s]\tpy [kg m/s]\tpz [kg m/s]"
+                << "\tLx [kg m2/s]\tLy [kg m2/s]\tLz [kg m2/s]"
+                << "\tkinetic [J]\tstrain [J]\tgravitational [J]\ttotal [J]"
+                << nl;
+        }
+        OFstream& os = file_();
+        os  << time_.value() << '\t' << t.mass << '\t'
+            << xCM.x() << '\t' << xCM.y() << '\t' << xCM.z() << '\t'
+            << t.momentum.x() << '\t' << t.momentum.y() << '\t'
+            << t.momentum.z() << '\t'
+            << t.angularMomentum.x() << '\t' << t.angularMomentum.y() << '\t'
+            << t.angularMomentum.z() << '\t'
+            << t.kinetic << '\t' << t.strain << '\t' << t.gravitational
+            << '\t' << total << nl;
+    }
+    return true;
+}
+
+
+// ************************************************************************* //
