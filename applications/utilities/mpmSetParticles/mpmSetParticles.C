@@ -198,6 +198,35 @@ int main(int argc, char *argv[])
             }
         }
 
+        // A region reaching outside the mesh (in the solved directions)
+        // would seed particles there: an error, for every seeding mode
+        if (r.type != regionType::cellZone)
+        {
+            const vector lo =
+                r.type == regionType::box ? r.lo : r.centre - vector::uniform(r.radius);
+            const vector hi =
+                r.type == regionType::box ? r.hi : r.centre + vector::uniform(r.radius);
+            const word key(r.type == regionType::box ? "min" : "radius");
+            for (label a = 0; a < dim; ++a)
+            {
+                const label k = view.axis(a);
+                const scalar tol = 1e-9*mag(mesh.bounds().span());
+                if
+                (
+                    lo[k] < mesh.bounds().min()[k] - tol
+                 || hi[k] > mesh.bounds().max()[k] + tol
+                )
+                {
+                    OStringStream found, allowed;
+                    found << "a region from " << lo << " to " << hi
+                        << " (reaching outside the mesh)";
+                    allowed << "regions inside the mesh bounds "
+                        << mesh.bounds();
+                    badEntry(d, key, found.str(), allowed.str());
+                }
+            }
+        }
+
         const label mat = solver.materialIndex
         (
             getAs<word>(d, "material", "a material of constant/mpmProperties"), d
@@ -240,23 +269,6 @@ int main(int argc, char *argv[])
             if (r.type == regionType::box)
             {
                 bb = boundBox(max(r.lo, bb.min()), min(r.hi, bb.max()));
-                // Particles asked for outside the mesh are an error
-                for (label a = 0; a < dim; ++a)
-                {
-                    const label k = view.axis(a);
-                    if
-                    (
-                        r.lo[k] < mesh.bounds().min()[k] - SMALL
-                     || r.hi[k] > mesh.bounds().max()[k] + SMALL
-                    )
-                    {
-                        OStringStream found, allowed;
-                        found << "min " << r.lo << " max " << r.hi;
-                        allowed << "a box inside the mesh bounds "
-                            << mesh.bounds();
-                        badEntry(d, "min", found.str(), allowed.str());
-                    }
-                }
             }
             else if (r.type != regionType::cellZone)
             {
