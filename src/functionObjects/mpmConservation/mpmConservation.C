@@ -7,6 +7,7 @@
 #include "mpmState.H"
 #include "fvMesh.H"
 #include "Time.H"
+#include "dictionaryChecks.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -26,14 +27,27 @@ Foam::functionObjects::mpmConservation::mpmConservation
     const dictionary& dict
 )
 :
-    fvMeshFunctionObject(name, runTime, dict)
+    fvMeshFunctionObject(name, runTime, dict),
+    interval_(1)
 {
     read(dict);
 }
 
 
+bool Foam::functionObjects::mpmConservation::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+    interval_ = dictionaryChecks::getLabelAtLeast(dict, "interval", 1, 1);
+    return true;
+}
+
+
 bool Foam::functionObjects::mpmConservation::execute()
 {
+    if (time_.timeIndex() % interval_ != 0)
+    {
+        return true;
+    }
     if (!mesh_.foundObject<mpmState>("mpmState"))
     {
         FatalErrorInFunction
