@@ -12,6 +12,7 @@
 #include "dictionaryChecks.H"
 #include "SubField.H"
 #include "Map.H"
+#include "Pair.H"
 
 const Foam::Enum<Foam::mpmGridBoundary::bcType>
 Foam::mpmGridBoundary::bcTypeNames
@@ -66,9 +67,57 @@ Foam::mpmGridBoundary::mpmGridBoundary
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
     const labelList& pointVertex = view.pointVertex();
 
-    // Every key must match a patch
+    const label nV = view.nVertices();
+    List<DynamicList<vector>> normals(nV);
+    List<bool> fixed(nV, false);
+    List<bool> touched(nV, false);
+
+    // Every key must match a patch, unless it is a box region
     for (const entry& e : dict)
     {
+        if (e.isDict() && e.dict().found("box", keyType::LITERAL))
+        {
+            const dictionary& bd = e.dict();
+            const bcType t = dictionaryChecks::getEnum
+            (
+                bd, "type", bcTypeNames, bcType::free
+            );
+            const Pair<vector> box = dictionaryChecks::getAs<Pair<vector>>
+            (
+                bd, "box", "two points ((xmin ymin zmin) (xmax ymax zmax))"
+            );
+            vector n(Zero);
+            if (t == bcType::slip)
+            {
+                n = dictionaryChecks::getAs<vector>(bd, "normal", "a non-zero vector");
+                if (mag(n) < VSMALL)
+                {
+                    dictionaryChecks::badEntry(bd, "normal", "(0 0 0)", "a non-zero vector");
+                }
+                n /= mag(n);
+            }
+            label count = 0;
+            forAll(view.vertices(), v)
+            {
+                const vector& x = view.vertices()[v];
+                bool in = true;
+                for (label a = 0; a < view.dim(); ++a)
+                {
+                    const label k = view.axis(a);
+                    in = in && x[k] >= box.first()[k] && x[k] <= box.second()[k];
+                }
+                if (!in || t == bcType::free) continue;
+                touched[v] = true;
+                ++count;
+                if (t == bcType::fixed) fixed[v] = true;
+                else normals[v].append(n);
+            }
+            Info<< "MPM grid condition " << e.keyword() << ": "
+                << bcTypeNames[t] << " on " << count << " vertices in the box"
+                << endl;
+            continue;
+        }
+
         bool matched = false;
         for (const polyPatch& pp : patches)
         {
@@ -89,11 +138,6 @@ Foam::mpmGridBoundary::mpmGridBoundary
         }
     }
 
-    const label nV = view.nVertices();
-    List<DynamicList<vector>> normals(nV);
-    List<bool> fixed(nV, false);
-    List<bool> touched(nV, false);
-
     for (const polyPatch& pp : patches)
     {
         if
@@ -105,7 +149,7 @@ Foam::mpmGridBoundary::mpmGridBoundary
             continue;
         }
         const dictionary* pd = dict.findDict(pp.name(), keyType::REGEX);
-        if (!pd) continue;
+        if (!pd || pd->found("box", keyType::LITERAL)) continue;
         const bcType t = dictionaryChecks::getEnum
         (
             *pd, "type", bcTypeNames, bcType::free
