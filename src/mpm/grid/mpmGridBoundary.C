@@ -168,7 +168,13 @@ Foam::mpmGridBoundary::mpmGridBoundary
                 if (v < 0) continue;
                 touched[v] = true;
                 if (t == bcType::fixed) fixed[v] = true;
-                else patchNormal(v) += a;
+                else
+                {
+                    // (Map's operator() would start from an uninitialised vector)
+                    auto iter = patchNormal.find(v);
+                    if (iter.found()) iter.val() += a;
+                    else patchNormal.insert(v, a);
+                }
             }
         }
         forAllConstIters(patchNormal, iter)
