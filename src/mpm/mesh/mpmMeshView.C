@@ -192,6 +192,22 @@ void Foam::mpmMeshView::build()
         }
     }
 
+    // Boundary vertices: those of faces without a neighbour
+    boundaryVertex_.setSize(nV, false);
+    for (label c = 0; c < nC; ++c)
+    {
+        const shapeTable& t = tables[shapes_[c]];
+        const label* cv = &cellVertices_[cellStart_[c]];
+        for (label f = 0; f < t.nFaces; ++f)
+        {
+            if (cellFaceNeighbour_[cellFaceStart_[c] + f] >= 0) continue;
+            for (label j = 0; j < 4 && t.faces[f][j] >= 0; ++j)
+            {
+                boundaryVertex_[cv[t.faces[f][j]]] = true;
+            }
+        }
+    }
+
     // Vertex adjacency along the cells' edges
     vertexStart_.setSize(nV + 1);
     vertexStart_[0] = 0;

@@ -118,6 +118,32 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
         P.V[p] = det(P.F[p])*P.V0[p];
     }
     updateStress(P);
+
+    // Particles in cells touching the mesh boundary have one-sided 1-rings:
+    // MLS weights can turn negative there (Fig. 2.6)
+    if (word(kernel_->type()) != "linear")
+    {
+        const labelList& cv = mesh_.cellVertices();
+        label nOneSided = 0;
+        forAll(P.x, p)
+        {
+            const label c = P.cell[p];
+            for (label i = mesh_.cellBegin(c); i < mesh_.cellEnd(c); ++i)
+            {
+                if (mesh_.boundaryVertex(cv[i])) { ++nOneSided; break; }
+            }
+        }
+        if (nOneSided)
+        {
+            WarningInFunction
+                << nOneSided << " of " << P.size() << " particles lie in cells"
+                << " touching the mesh boundary, where the " << kernel_->type()
+                << " kernel's 1-ring is one-sided and weights can turn"
+                << " negative. Mesh an extra layer of cells outside the"
+                << " material (dissertation Fig. 2.6) unless a grid condition"
+                << " holds those vertices." << endl;
+        }
+    }
 }
 
 
