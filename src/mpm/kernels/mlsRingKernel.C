@@ -112,10 +112,10 @@ void Foam::mlsRingKernel::compute
     const labelList& cv = mesh_.cellVertices();
     const labelList& nbr = mesh_.vertexNeighbours();
 
-    // Scratch for one particle's ring (grows once to the largest ring)
-    static thread_local DynamicList<label> ring;
-    static thread_local DynamicList<scalar> eta;
-    static thread_local DynamicList<scalar> d;
+    DynamicList<label>& ring = ring_;
+    DynamicList<scalar>& eta = eta_;
+    DynamicList<scalar>& d = d_;
+    DynamicList<vector>& dx = dx_;
     mpmMeshView::shapeValues sv;
 
     forAll(x, p)
@@ -158,20 +158,32 @@ void Foam::mlsRingKernel::compute
         // Sample weights and the moment matrix M = sum d P P^T
         scalar M[4][4] = {{0}};
         d.setSize(ring.size());
+        dx.setSize(ring.size());
         forAll(ring, s)
         {
             const label v = ring[s];
             slot_[v] = -1;
-            const scalar r = mesh_.distance(vx[v], xp)/h[v];
+            vector P(Zero);
+            for (label a = 0; a < dim; ++a) P[a] = vx[v][ax[a]] - xp[ax[a]];
+            dx[s] = P;
+            const scalar r = mag(P)/h[v];
             const scalar e = diminish_ ? max(eta[s], scalar(0)) : scalar(1);
             d[s] = e*bSpline(r);
             if (d[s] == 0) continue;
-            scalar P[4] = {1, 0, 0, 0};
-            for (label a = 0; a < dim; ++a) P[a + 1] = vx[v][ax[a]] - xp[ax[a]];
-            for (label i = 0; i < n; ++i)
+            const scalar ds = d[s];
+            M[0][0] += ds;
+            for (label i = 0; i < dim; ++i)
             {
-                for (label j = 0; j < n; ++j) M[i][j] += d[s]*P[i]*P[j];
+                M[0][i + 1] += ds*P[i];
+                for (label j = 0; j <= i; ++j) M[i + 1][j + 1] += ds*P[i]*P[j];
             }
+        }
+        // Symmetric: mirror the first row and the position block's lower
+        // triangle
+        for (label i = 1; i < n; ++i)
+        {
+            M[i][0] = M[0][i];
+            for (label j = 1; j < i; ++j) M[j][i] = M[i][j];
         }
 
         scalar Minv[4][4];
@@ -189,8 +201,7 @@ void Foam::mlsRingKernel::compute
         {
             if (d[s] == 0) continue;
             const label v = ring[s];
-            scalar P[4] = {1, 0, 0, 0};
-            for (label a = 0; a < dim; ++a) P[a + 1] = vx[v][ax[a]] - xp[ax[a]];
+            const scalar P[4] = {1, dx[s][0], dx[s][1], dx[s][2]};
             scalar q[4] = {0, 0, 0, 0};
             for (label i = 0; i < n; ++i)
             {
