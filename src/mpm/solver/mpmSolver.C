@@ -24,6 +24,23 @@ void Foam::mpmSolver::readSettings(const dictionary& dict)
     }
     maxDeltaT_ = getPositive(dict, "maxDeltaT", 1e30);
 
+    // USL by default (Algorithm 1); MUSL for the linear kernel, whose
+    // vertices at a free surface can hold a vanishing mass
+    const word kernelName(dict.get<word>("kernel"));
+    const word scheme
+    (
+        getAsOrDefault<word>
+        (
+            dict, "updateScheme", kernelName == "linear" ? "MUSL" : "USL",
+            "USL or MUSL"
+        )
+    );
+    if (scheme != "USL" && scheme != "MUSL")
+    {
+        badEntry(dict, "updateScheme", scheme, "USL or MUSL");
+    }
+    musl_ = (scheme == "MUSL");
+
     const dictionary* md = dict.findDict("materials", keyType::LITERAL);
     if (!md || md->empty())
     {
@@ -74,6 +91,7 @@ Foam::mpmSolver::mpmSolver
     gravity_(Zero),
     CFL_(0.5),
     maxDeltaT_(1e30),
+    musl_(false),
     hMin_(*std::min_element(mesh.vertexSize().begin(), mesh.vertexSize().end())),
     grid_(mesh.nVertices())
 {
@@ -233,14 +251,41 @@ bool Foam::mpmSolver::step(mpmParticles& P, const scalar dt)
         }
     }
 
-    // 8. Deformation gradients (2.15), checked before anything changes
+    // MUSL: G2P first, then the velocity gradient from grid velocities
+    // re-projected from the updated particles (bounded by the particle
+    // velocities, so vertices with a tiny mass cannot amplify round-off)
+    if (musl_)
+    {
+        savedV_ = P.v;
+        if (transfer_->affine()) savedB_ = P.B;
+        transfer_->g2p(kw_, grid_, P);
+
+        for (const label i : grid_.active) grid_.force[i] = Zero;
+        for (label p = 0; p < nP; ++p)
+        {
+            const vector mv = P.m[p]*P.v[p];
+            for (label k = kw_.start[p]; k < kw_.start[p + 1]; ++k)
+            {
+                grid_.force[kw_.vertex[k]] += kw_.w[k]*mv;
+            }
+        }
+        for (const label i : grid_.active)
+        {
+            const scalar m = grid_.mass[i];
+            grid_.force[i] = m > tiny ? mesh_.inPlane(grid_.force[i]/m) : Zero;
+        }
+        boundary_.apply(grid_.isActive, grid_.force);
+    }
+    const List<vector>& vGrad = musl_ ? grid_.force : grid_.newVelocity;
+
+    // 8. Deformation gradients (2.15), checked before anything is kept
     Fnew_.setSize(nP);
     for (label p = 0; p < nP; ++p)
     {
         tensor gradV(Zero);
         for (label k = kw_.start[p]; k < kw_.start[p + 1]; ++k)
         {
-            gradV += grid_.newVelocity[kw_.vertex[k]]*kw_.gradW[k];
+            gradV += vGrad[kw_.vertex[k]]*kw_.gradW[k];
         }
         Fnew_[p] = (I + dt*gradV) & P.F[p];
         const scalar J = det(Fnew_[p]);
@@ -250,6 +295,11 @@ bool Foam::mpmSolver::step(mpmParticles& P, const scalar dt)
                 + Foam::name(P.x[p]) + " would invert: det F = "
                 + Foam::name(J) + " (time step too large, or the material"
                 " is crushed)";
+            if (musl_)
+            {
+                P.v = savedV_;
+                if (transfer_->affine()) P.B = savedB_;
+            }
             return false;
         }
     }
@@ -265,8 +315,11 @@ bool Foam::mpmSolver::step(mpmParticles& P, const scalar dt)
         P.x[p] += dt*vg;
     }
 
-    // 7. G2P velocities (and B)
-    transfer_->g2p(kw_, grid_, P);
+    // 7. G2P velocities (and B) (USL: after the gradient)
+    if (!musl_)
+    {
+        transfer_->g2p(kw_, grid_, P);
+    }
 
     // 9., 10. Volume (2.16) and stress (2.10)
     for (label p = 0; p < nP; ++p)

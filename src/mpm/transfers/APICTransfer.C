@@ -5,6 +5,7 @@
 
 #include "APICTransfer.H"
 #include "addToRunTimeSelectionTable.H"
+#include "dictionaryChecks.H"
 
 namespace Foam
 {
@@ -20,7 +21,18 @@ Foam::APICTransfer::APICTransfer
 )
 :
     mpmTransfer(dict, mesh)
-{}
+{
+    if (dict.getOrDefault<word>("kernel", word::null) == "linear")
+    {
+        dictionaryChecks::badEntry
+        (
+            dict, "transfer", "APIC (with kernel linear)",
+            "PIC or FLIP with kernel linear; APIC needs an invertible second"
+            " moment D_p of the weights, which the linear kernel lacks at"
+            " vertices (use kernel umls or mlsRing for APIC)"
+        );
+    }
+}
 
 
 // (2.35) APIC P2G
