@@ -17,7 +17,7 @@ Description
 
     Each probe point is located in the mesh (walking from the previous
     point's cell); a point outside the mesh stops with a FatalIOError naming
-    the entry \c points or \c line.  For each kernel one file
+    the entry \c points, \c line or \c random.  For each kernel one file
         postProcessing/<outputName>/<kernel>.dat
     holds one row per (point, vertex) that the kernel returns (for
     mlsRing and umls the ring vertices with a non-zero sample weight, for
@@ -30,7 +30,8 @@ Description
     Per kernel the log gives a sanity line with the worst MLS identities
     over the points: max |sum_v w_vp - 1| (partition of unity),
     max |sum_v w_vp x_v - x_p| (linear reproduction, over the solution
-    axes), max |sum_v grad w_vp| and the smallest weight.
+    axes), max |sum_v grad w_vp|, max |sum_v x_v (grad w_vp)^T - I| (over
+    the solution axes) and the smallest weight.
 
 Usage
     mpmKernelProbe [-case dir] [-dict file]
@@ -50,13 +51,23 @@ Usage
             nPoints 301;
         }
 
+        // or uniform random points in a box (a fixed seed: reproducible)
+        random
+        {
+            min     (1 1 1);
+            max     (3 3 3);
+            nPoints 1000;
+            seed    1;
+        }
+
         outputName  mpmKernelProbe;     // optional
     \endverbatim
     \table
         Property   | Description                                  | Required | Default
         kernels    | list of kernels: linear, mlsRing, umls       | yes |
-        points     | probe points ((x y z) ...)                   | either points or line |
-        line       | start, end [m] and nPoints (>= 2)             | either points or line |
+        points     | probe points ((x y z) ...)                   | one of points, line, random |
+        line       | start, end [m] and nPoints (>= 2)             | one of points, line, random |
+        random     | min, max [m], nPoints (>= 2), seed (default 1) | one of points, line, random |
         outputName | output directory under postProcessing/       | no  | mpmKernelProbe
     \endtable
     Other entries of the dictionary are passed to the kernels (none reads
@@ -74,6 +85,7 @@ Usage
 #include "mpmMeshView.H"
 #include "mpmKernel.H"
 #include "dictionaryChecks.H"
+#include "Random.H"
 
 using namespace Foam;
 
@@ -126,27 +138,35 @@ int main(int argc, char *argv[])
         }
     }
 
-    // Probe points: 'points' or 'line'
+    // Probe points: 'points', 'line' or 'random'
     const string pointsAllowed
     (
-        "either 'points ((x y z) ...);' or"
-        " 'line { start (x y z); end (x y z); nPoints N; }' (N >= 2)"
+        "one of 'points ((x y z) ...);',"
+        " 'line { start (x y z); end (x y z); nPoints N; }' (N >= 2) or"
+        " 'random { min (x y z); max (x y z); nPoints N; seed S; }'"
     );
-    const bool hasPoints = probeDict.found("points", keyType::LITERAL);
-    const bool hasLine = probeDict.found("line", keyType::LITERAL);
-    if (!hasPoints && !hasLine)
+    label nGiven = 0;
+    word pointsKey;
+    for (const word key : {"points", "line", "random"})
+    {
+        if (probeDict.found(key, keyType::LITERAL))
+        {
+            ++nGiven;
+            pointsKey = key;
+        }
+    }
+    if (nGiven == 0)
     {
         missingEntry(probeDict, "points", pointsAllowed);
     }
-    if (hasPoints && hasLine)
+    if (nGiven > 1)
     {
-        badEntry(probeDict, "line", "a line given together with 'points'",
+        badEntry(probeDict, pointsKey, "more than one way to give points",
             pointsAllowed);
     }
-    const word pointsKey(hasPoints ? "points" : "line");
 
     List<vector> pts;
-    if (hasPoints)
+    if (pointsKey == "points")
     {
         pts = getAs<List<vector>>
         (
@@ -160,25 +180,42 @@ int main(int argc, char *argv[])
     }
     else
     {
-        const dictionary* ld = probeDict.findDict("line", keyType::LITERAL);
+        const dictionary* ld = probeDict.findDict(pointsKey, keyType::LITERAL);
         if (!ld)
         {
-            badEntry(probeDict, "line", entryText(probeDict, "line"),
-                "a sub-dictionary { start (x y z); end (x y z); nPoints N; }");
+            badEntry(probeDict, pointsKey, entryText(probeDict, pointsKey),
+                pointsAllowed);
         }
-        const vector start = getAs<vector>(*ld, "start", "a point (x y z)");
-        const vector end = getAs<vector>(*ld, "end", "a point (x y z)");
         if (!ld->found("nPoints", keyType::LITERAL))
         {
             missingEntry(*ld, "nPoints", "an integer >= 2");
         }
         const label n = getLabelAtLeast(*ld, "nPoints", 2, 2);
         pts.setSize(n);
-        forAll(pts, i)
+        if (pointsKey == "line")
         {
-            pts[i] = start + (end - start)*(scalar(i)/scalar(n - 1));
+            const vector start = getAs<vector>(*ld, "start", "a point (x y z)");
+            const vector end = getAs<vector>(*ld, "end", "a point (x y z)");
+            forAll(pts, i)
+            {
+                pts[i] = start + (end - start)*(scalar(i)/scalar(n - 1));
+            }
+            pts.last() = end;
         }
-        pts.last() = end;
+        else
+        {
+            // Uniform random points in a box (reproducible: fixed seed);
+            // the directions that are not solved stay at the box's middle
+            const vector lo = getAs<vector>(*ld, "min", "a point (x y z)");
+            const vector hi = getAs<vector>(*ld, "max", "a point (x y z)");
+            const label seed = getAsOrDefault<label>(*ld, "seed", 1, "an integer");
+            Random rnd(seed);
+            forAll(pts, i)
+            {
+                const vector r = rnd.sample01<vector>();
+                pts[i] = lo + cmptMultiply(hi - lo, r);
+            }
+        }
     }
 
     const fileName outDir
@@ -240,13 +277,15 @@ int main(int argc, char *argv[])
             << "# point[-] px[m] py[m] pz[m] vertex[-] vx[m] vy[m] vz[m]"
             << " w[-] gradWx[1/m] gradWy[1/m] gradWz[1/m]" << nl;
 
-        scalar errPU = 0, errLin = 0, errGrad = 0, wMin = GREAT;
+        scalar errPU = 0, errLin = 0, errGrad = 0, errId = 0, wMin = GREAT;
+        const tensor Isol = I - view.offAxes();
         label nMax = 0;
         forAll(pts, p)
         {
             const vector& xp = pts[p];
             scalar sw = 0;
             vector swx(Zero), sg(Zero);
+            tensor sxg(Zero);
             nMax = max(nMax, kw.start[p + 1] - kw.start[p]);
             for (label i = kw.start[p]; i < kw.start[p + 1]; ++i)
             {
@@ -256,6 +295,7 @@ int main(int argc, char *argv[])
                 sw += w;
                 swx += w*vx[v];
                 sg += g;
+                sxg += vx[v]*g;
                 wMin = min(wMin, w);
                 os  << p << ' ' << xp.x() << ' ' << xp.y() << ' ' << xp.z()
                     << ' ' << v << ' ' << vx[v].x() << ' ' << vx[v].y()
@@ -265,6 +305,9 @@ int main(int argc, char *argv[])
             errPU = max(errPU, mag(sw - 1));
             errLin = max(errLin, view.distance(swx, xp));
             errGrad = max(errGrad, mag(view.inPlane(sg)));
+            // sum x_v (grad w)^T = I over the solution axes
+            const tensor dI = (Isol & sxg & Isol) - Isol;
+            errId = max(errId, cmptMax(cmptMag(dI)));
         }
 
         Info<< "kernel " << kernelName << ": " << pts.size() << " points, "
@@ -272,7 +315,8 @@ int main(int argc, char *argv[])
             << " per point); max |sum w - 1| = " << errPU
             << ", max |sum w x_v - x_p| = " << errLin
             << " m, max |sum grad w| = " << errGrad
-            << " 1/m, min w = " << wMin << nl
+            << " 1/m, max |sum x_v grad w - I| = " << errId
+            << ", min w = " << wMin << nl
             << "    written " << outFile << nl << endl;
     }
 
