@@ -5,6 +5,7 @@
 
 #include "mlsRingKernel.H"
 #include "addToRunTimeSelectionTable.H"
+#include "dictionaryChecks.H"
 
 namespace Foam
 {
@@ -16,6 +17,13 @@ namespace Foam
 namespace
 {
 using namespace Foam;
+
+enum class supportSize { mean, maxEdge };
+const Enum<supportSize> supportSizeNames
+({
+    { supportSize::mean, "mean" },
+    { supportSize::maxEdge, "maxEdge" },
+});
 
 // Invert the symmetric (n x n, n <= 4) moment matrix M in place by
 // Gauss-Jordan elimination with partial pivoting.  Returns the smallest
@@ -77,6 +85,14 @@ Foam::mlsRingKernel::mlsRingKernel
 :
     mpmKernel(dict, mesh),
     diminish_(diminish),
+    h_
+    (
+        dictionaryChecks::getEnum
+        (
+            dict, "supportSize", supportSizeNames, supportSize::mean
+        ) == supportSize::mean
+      ? mesh.vertexSize() : mesh.vertexMaxEdge()
+    ),
     slot_(mesh.nVertices(), -1)
 {}
 
@@ -108,7 +124,7 @@ void Foam::mlsRingKernel::compute
     for (label a = 0; a < dim; ++a) ax[a] = mesh_.axis(a);
 
     const List<vector>& vx = mesh_.vertices();
-    const scalarList& h = mesh_.vertexSize();
+    const scalarList& h = h_;
     const labelList& cv = mesh_.cellVertices();
     const labelList& nbr = mesh_.vertexNeighbours();
 

@@ -236,8 +236,9 @@ void Foam::mpmMeshView::build()
     }
     vertexNeighbours_.transfer(nbrs);
 
-    // Local sizes
+    // Local sizes: mean and longest edge
     vertexSize_.setSize(nV, Zero);
+    vertexMaxEdge_.setSize(nV, Zero);
     for (label v = 0; v < nV; ++v)
     {
         const label n = vertexStart_[v + 1] - vertexStart_[v];
@@ -247,12 +248,16 @@ void Foam::mpmMeshView::build()
                 << "Vertex " << v << " at " << vertices_[v]
                 << " belongs to no cell edge" << exit(FatalError);
         }
-        scalar s = 0;
+        scalar s = 0, smax = 0;
         for (label k = vertexStart_[v]; k < vertexStart_[v + 1]; ++k)
         {
-            s += distance(vertices_[v], vertices_[vertexNeighbours_[k]]);
+            const scalar l =
+                distance(vertices_[v], vertices_[vertexNeighbours_[k]]);
+            s += l;
+            smax = max(smax, l);
         }
         vertexSize_[v] = s/n;
+        vertexMaxEdge_[v] = smax;
     }
 }
 
