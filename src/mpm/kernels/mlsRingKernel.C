@@ -89,7 +89,7 @@ Foam::mlsRingKernel::mlsRingKernel
     (
         dictionaryChecks::getEnum
         (
-            dict, "supportSize", supportSizeNames, supportSize::mean
+            dict, "supportSize", supportSizeNames, supportSize::maxEdge
         ) == supportSize::mean
       ? mesh.vertexSize() : mesh.vertexMaxEdge()
     ),

@@ -227,7 +227,7 @@ bool Foam::mpmSolver::step(mpmParticles& P, const scalar dt)
     for (const label i : grid_.active)
     {
         const scalar m = grid_.mass[i];
-        if (m > tiny)
+        if (mag(m) > tiny)
         {
             grid_.velocity[i] /= m;
             grid_.newVelocity[i] =
@@ -272,7 +272,7 @@ bool Foam::mpmSolver::step(mpmParticles& P, const scalar dt)
         for (const label i : grid_.active)
         {
             const scalar m = grid_.mass[i];
-            grid_.force[i] = m > tiny ? mesh_.inPlane(grid_.force[i]/m) : Zero;
+            grid_.force[i] = mag(m) > tiny ? mesh_.inPlane(grid_.force[i]/m) : Zero;
         }
         boundary_.apply(grid_.isActive, grid_.force);
     }
