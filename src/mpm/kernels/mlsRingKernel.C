@@ -28,6 +28,27 @@ const Enum<supportSize> supportSizeNames
 // Invert the symmetric (n x n, n <= 4) moment matrix M in place by
 // Gauss-Jordan elimination with partial pivoting.  Returns the smallest
 // pivot relative to the largest diagonal entry (0: singular).
+// Closed-form inverse of the symmetric 3 x 3 moment matrix (2D); returns
+// |det| relative to the product of the diagonal (0: singular)
+scalar invertMoment3(const scalar M[4][4], scalar Minv[4][4])
+{
+    const scalar c00 = M[1][1]*M[2][2] - M[1][2]*M[1][2];
+    const scalar c01 = M[0][2]*M[1][2] - M[0][1]*M[2][2];
+    const scalar c02 = M[0][1]*M[1][2] - M[0][2]*M[1][1];
+    const scalar det = M[0][0]*c00 + M[0][1]*c01 + M[0][2]*c02;
+    const scalar scale = std::abs(M[0][0]*M[1][1]*M[2][2]);
+    if (det == 0 || scale == 0) return 0;
+    const scalar r = 1/det;
+    Minv[0][0] = c00*r;
+    Minv[0][1] = Minv[1][0] = c01*r;
+    Minv[0][2] = Minv[2][0] = c02*r;
+    Minv[1][1] = (M[0][0]*M[2][2] - M[0][2]*M[0][2])*r;
+    Minv[1][2] = Minv[2][1] = (M[0][2]*M[0][1] - M[0][0]*M[1][2])*r;
+    Minv[2][2] = (M[0][0]*M[1][1] - M[0][1]*M[0][1])*r;
+    return std::abs(det)/scale;
+}
+
+
 scalar invertMoment(const label n, scalar M[4][4], scalar Minv[4][4])
 {
     scalar A[4][8];
@@ -203,7 +224,9 @@ void Foam::mlsRingKernel::compute
         }
 
         scalar Minv[4][4];
-        if (invertMoment(n, M, Minv) < 1e-12)
+        const scalar conditioning =
+            (n == 3) ? invertMoment3(M, Minv) : invertMoment(n, M, Minv);
+        if (conditioning < 1e-12)
         {
             FatalErrorInFunction
                 << type() << " kernel: the moment matrix of the particle at "

@@ -349,8 +349,34 @@ void Foam::mpmMeshView::shapeFunctions
                 T[i][j] = vertices_[cv[j + 1]][axes_[i]] - x0[axes_[i]];
             }
         }
-        // Inverse column by column (n <= 3): rows of T^-1 are grad l_j
-        for (label j = 0; j < n; ++j)
+        // Inverse (rows of T^-1 are grad l_j): closed form in 1D and 2D,
+        // column by column in 3D
+        bool singular = false;
+        if (n == 1)
+        {
+            singular = (T[0][0] == 0);
+            if (!singular) Tinv[0][0] = 1/T[0][0];
+        }
+        else if (n == 2)
+        {
+            const scalar det = T[0][0]*T[1][1] - T[0][1]*T[1][0];
+            singular = (det == 0);
+            if (!singular)
+            {
+                const scalar r = 1/det;
+                Tinv[0][0] = T[1][1]*r;
+                Tinv[0][1] = -T[0][1]*r;
+                Tinv[1][0] = -T[1][0]*r;
+                Tinv[1][1] = T[0][0]*r;
+            }
+        }
+        if (singular)
+        {
+            FatalErrorInFunction
+                << "Degenerate " << shapeName(s) << " cell " << c
+                << " (zero volume)" << exit(FatalError);
+        }
+        for (label j = 0; n == 3 && j < n; ++j)
         {
             scalar A[3][3], r[3] = {0, 0, 0};
             for (label a = 0; a < n; ++a)
