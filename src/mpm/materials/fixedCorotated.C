@@ -72,19 +72,13 @@ void Foam::fixedCorotated::stress
         const scalar J = det(Fp);
         if (!(J > 0))
         {
-            FatalErrorInFunction
-                << "Material " << name_ << " (fixedCorotated): particle " << p
-                << " has J = det(F) = " << J << " (must be > 0: the particle"
-                << " is inverted or collapsed)" << nl
-                << "    F = " << Fp << nl
-                << exit(FatalError);
+            inverted(p, Fp, J);
         }
 
         // J - 1 = I1 + I2 + I3 (the invariants of H = F - I): no
         // cancellation at small strains, unlike det(F) - 1
         const tensor H(Fp - tensor::I);
-        const scalar trH = tr(H);
-        const scalar Jm1 = trH + 0.5*(trH*trH - (H && H.T())) + det(H);
+        const scalar Jm1 = jacobianMinusOne(H);
 
         const tensor FmR(Fp - polarRotation(Fp));
 

@@ -85,4 +85,21 @@ Foam::scalar Foam::mpmMaterial::waveSpeed() const
 }
 
 
+void Foam::mpmMaterial::inverted
+(
+    const label p,
+    const tensor& F,
+    const scalar J
+) const
+{
+    FatalErrorInFunction
+        << "Material " << name_ << " (" << type() << "): particle " << p
+        << " has J = det(F) = " << J << " (must be > 0: the particle"
+        << " is inverted or collapsed)" << nl
+        << "    F = " << F << nl
+        << exit(FatalError);
+    std::abort();   // not reached
+}
+
+
 // ************************************************************************* //

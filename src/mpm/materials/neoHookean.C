@@ -36,12 +36,7 @@ void Foam::neoHookean::stress
         const scalar J = det(Fp);
         if (!(J > 0))
         {
-            FatalErrorInFunction
-                << "Material " << name_ << " (neoHookean): particle " << p
-                << " has J = det(F) = " << J << " (must be > 0: the particle"
-                << " is inverted or collapsed)" << nl
-                << "    F = " << Fp << nl
-                << exit(FatalError);
+            inverted(p, Fp, J);
         }
 
         // Near F = I the energy is O(|H|^2), H = F - I, while
@@ -51,7 +46,7 @@ void Foam::neoHookean::stress
         // J - 1 = I1 + I2 + I3 (the invariants of H), it stays relative
         const tensor H(Fp - tensor::I);
         const scalar trH = tr(H);
-        const scalar Jm1 = trH + 0.5*(trH*trH - (H && H.T())) + det(H);
+        const scalar Jm1 = jacobianMinusOne(H);
         const scalar lnJ =
             (J > 0.5 && J < 2) ? std::log1p(Jm1) : std::log(J);
 
