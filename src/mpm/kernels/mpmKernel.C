@@ -25,19 +25,13 @@ Foam::autoPtr<Foam::mpmKernel> Foam::mpmKernel::New
     const mpmMeshView& mesh
 )
 {
-    OStringStream allowed;
-    allowed << "one of " << dictionaryConstructorTablePtr_->sortedToc();
-    const word name
+    word selected;
+    const auto cstr = dictionaryChecks::selectConstructor
     (
-        dictionaryChecks::getAs<word>(dict, "kernel", allowed.str())
+        dict, "kernel", *dictionaryConstructorTablePtr_, selected
     );
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(name);
-    if (!cstrIter.found())
-    {
-        dictionaryChecks::badEntry(dict, "kernel", name, allowed.str());
-    }
-    Info<< "MPM kernel: " << name << endl;
-    return cstrIter()(dict, mesh);
+    Info<< "MPM kernel: " << selected << endl;
+    return cstr(dict, mesh);
 }
 
 

@@ -15,30 +15,11 @@ namespace Foam
 }
 
 
-namespace
-{
-
-//- Mandatory entry: a finite number > 0
-Foam::scalar readPositive(const Foam::dictionary& dict, const Foam::word& key)
-{
-    const Foam::string allowed("a finite number > 0");
-    const Foam::scalar val =
-        Foam::dictionaryChecks::getAs<Foam::scalar>(dict, key, allowed);
-    if (!(val > 0) || !std::isfinite(val))
-    {
-        Foam::dictionaryChecks::badEntry(dict, key, Foam::name(val), allowed);
-    }
-    return val;
-}
-
-} // End anonymous namespace
-
-
 Foam::mpmMaterial::mpmMaterial(const word& name, const dictionary& dict)
 :
     name_(name),
-    rho_(readPositive(dict, "rho")),
-    E_(readPositive(dict, "E")),
+    rho_(dictionaryChecks::getPositive(dict, "rho")),
+    E_(dictionaryChecks::getPositive(dict, "E")),
     nu_(0),
     lambda_(0),
     mu_(0)
@@ -63,19 +44,13 @@ Foam::autoPtr<Foam::mpmMaterial> Foam::mpmMaterial::New
     const dictionary& dict
 )
 {
-    OStringStream allowed;
-    allowed << "one of " << dictionaryConstructorTablePtr_->sortedToc();
-    const word type
+    word selected;
+    const auto cstr = dictionaryChecks::selectConstructor
     (
-        dictionaryChecks::getAs<word>(dict, "type", allowed.str())
+        dict, "type", *dictionaryConstructorTablePtr_, selected
     );
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(type);
-    if (!cstrIter.found())
-    {
-        dictionaryChecks::badEntry(dict, "type", type, allowed.str());
-    }
-    Info<< "MPM material " << name << ": " << type << endl;
-    return cstrIter()(name, dict);
+    Info<< "MPM material " << name << ": " << selected << endl;
+    return cstr(name, dict);
 }
 
 

@@ -25,19 +25,13 @@ Foam::autoPtr<Foam::mpmTransfer> Foam::mpmTransfer::New
     const mpmMeshView& mesh
 )
 {
-    OStringStream allowed;
-    allowed << "one of " << dictionaryConstructorTablePtr_->sortedToc();
-    const word name
+    word selected;
+    const auto cstr = dictionaryChecks::selectConstructor
     (
-        dictionaryChecks::getAs<word>(dict, "transfer", allowed.str())
+        dict, "transfer", *dictionaryConstructorTablePtr_, selected
     );
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(name);
-    if (!cstrIter.found())
-    {
-        dictionaryChecks::badEntry(dict, "transfer", name, allowed.str());
-    }
-    Info<< "MPM transfer: " << name << endl;
-    return cstrIter()(dict, mesh);
+    Info<< "MPM transfer: " << selected << endl;
+    return cstr(dict, mesh);
 }
 
 
