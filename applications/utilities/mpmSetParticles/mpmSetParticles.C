@@ -160,7 +160,9 @@ int main(int argc, char *argv[])
         {
             badEntry(setDict, "regions", e.keyword(), "name { type ...; } entries");
         }
-        const dictionary& d = e.dict();
+        // Name the region's dictionary after the file, for messages
+        dictionary d(e.dict());
+        d.name() = setDict.objectPath() + ".regions." + e.keyword();
         region r;
         r.type = getEnum(d, "type", regionTypeNames, regionType::box);
         switch (r.type)
