@@ -1,0 +1,64 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+-------------------------------------------------------------------------------
+Application
+    shockMpmFoam
+
+Group
+    mpmFoam solvers
+
+Description
+    Compressible inviscid flow with shocks on uniform Cartesian (blockMesh)
+    meshes: finite-difference WENO with local Lax-Friedrichs flux splitting,
+    explicit or semi-implicit (time-split, implicit pressure) time stepping
+    (dissertation ch. 3, 3.2.1-3.2.5 and 3.2.9).  With no particles in the
+    case it is a pure gas solver.
+
+    Reads system/shockMpmDict, constant/thermophysicalProperties and the
+    initial fields p, U and rho (or T), e.g. from setFields.  Writes rho, U,
+    p, T, Mach and schlieren; restarts from any written time.
+
+Usage
+    shockMpmFoam [-case dir]
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "gasDynamics.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "WENO-LLF compressible flow (explicit or semi-implicit) on"
+        " Cartesian blockMesh meshes"
+    );
+    argList::noParallel();
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    gasDynamics gas(mesh);
+
+    Info<< "Starting time loop" << nl << endl;
+
+    while (runTime.run())
+    {
+        gas.step(runTime);
+        runTime.write();
+    }
+
+    gas.summary();
+    Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
+        << "  ClockTime = " << runTime.elapsedClockTime() << " s"
+        << nl << nl << "End" << nl << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

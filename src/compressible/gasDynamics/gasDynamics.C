@@ -1,0 +1,501 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "gasDynamics.H"
+#include "dictionaryChecks.H"
+#include "fvc.H"
+
+using namespace Foam::dictionaryChecks;
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+Foam::IOobject readObject(const Foam::fvMesh& mesh, const Foam::word& name)
+{
+    return Foam::IOobject
+    (
+        name,
+        mesh.time().timeName(),
+        mesh,
+        Foam::IOobject::MUST_READ,
+        Foam::IOobject::AUTO_WRITE
+    );
+}
+
+Foam::IOobject newObject
+(
+    const Foam::fvMesh& mesh,
+    const Foam::word& name,
+    bool write
+)
+{
+    return Foam::IOobject
+    (
+        name,
+        mesh.time().timeName(),
+        mesh,
+        Foam::IOobject::NO_READ,
+        write ? Foam::IOobject::AUTO_WRITE : Foam::IOobject::NO_WRITE
+    );
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::tmp<Foam::volScalarField> Foam::gasDynamics::readDensity() const
+{
+    IOobject rhoIO(readObject(mesh_, "rho"));
+    if (rhoIO.typeHeaderOk<volScalarField>(true))
+    {
+        Info<< "Reading rho" << nl;
+        return tmp<volScalarField>::New(rhoIO, mesh_);
+    }
+    Info<< "Reading T (rho = p/(R T))" << nl;
+    volScalarField T(readObject(mesh_, "T"), mesh_);
+    forAll(T, celli)
+    {
+        if (!(T[celli] > 0) || !std::isfinite(T[celli]))
+        {
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__, T.objectPath(), -1
+            )   << "internalField of " << T.objectPath() << " has the value "
+                << T[celli] << " in cell " << celli << " at "
+                << mesh_.cellCentres()[celli] << nl
+                << "    allowed: a finite temperature > 0"
+                << exit(FatalIOError);
+        }
+    }
+    auto trho = tmp<volScalarField>::New
+    (
+        newObject(mesh_, "rho", true),
+        mesh_,
+        dimensionedScalar("zero", dimDensity, 0.0)
+    );
+    volScalarField& rho = trho.ref();
+    rho.primitiveFieldRef() = p_.primitiveField()/(gas_.R()*T.primitiveField());
+    forAll(rho.boundaryField(), patchi)
+    {
+        rho.boundaryFieldRef()[patchi] ==
+            p_.boundaryField()[patchi]/(gas_.R()*T.boundaryField()[patchi]);
+    }
+    return trho;
+}
+
+
+void Foam::gasDynamics::checkInitial() const
+{
+    auto check = [&](const volScalarField& f, const char* what)
+    {
+        forAll(f, celli)
+        {
+            if (!(f[celli] > 0) || !std::isfinite(f[celli]))
+            {
+                FatalIOError
+                (
+                    FUNCTION_NAME, __FILE__, __LINE__, f.objectPath(), -1
+                )   << "internalField of " << f.objectPath()
+                    << " has the value " << f[celli] << " in cell "
+                    << celli << " at " << mesh_.cellCentres()[celli] << nl
+                    << "    allowed: a finite " << what << " > 0"
+                    << exit(FatalIOError);
+            }
+        }
+    };
+    check(p_, "pressure");
+    check(rho_, "density");
+    forAll(Uf_, celli)
+    {
+        if (!std::isfinite(mag(Uf_[celli])))
+        {
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__, Uf_.objectPath(), -1
+            )   << "internalField of " << Uf_.objectPath() << " is not finite"
+                << " in cell " << celli << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::gasDynamics::fromFields()
+{
+    const auto& lat = view_.latticeOf();
+    forAll(rho_, celli)
+    {
+        const label i = lat[celli];
+        const vector& u = Uf_[celli];
+        U_.q[0][i] = rho_[celli];
+        U_.q[1][i] = rho_[celli]*u.x();
+        U_.q[2][i] = rho_[celli]*u.y();
+        U_.q[3][i] = rho_[celli]*u.z();
+        U_.q[4][i] =
+            gas_.totalEnergy(rho_[celli], u.x(), u.y(), u.z(), p_[celli]);
+    }
+}
+
+
+Foam::scalar Foam::gasDynamics::timeToNextWrite() const
+{
+    const Time& rt = mesh_.time();
+    const dictionary& cd = rt.controlDict();
+    const word wc(cd.getOrDefault<word>("writeControl", "timeStep"));
+    if (wc != "adjustable" && wc != "adjustableRunTime")
+    {
+        return GREAT;
+    }
+    const scalar wi = cd.get<scalar>("writeInterval");
+    const scalar t0 = rt.startTime().value();
+    const scalar rel = (rt.value() - t0)/wi;
+    const scalar next = (std::floor(rel + 1e-9) + 1)*wi + t0;
+    return next - rt.value();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::gasDynamics::gasDynamics(const fvMesh& mesh)
+:
+    mesh_(mesh),
+    dict_
+    (
+        IOobject
+        (
+            "shockMpmDict",
+            mesh.time().system(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    gas_(mesh.time()),
+    view_(mesh),
+    CFL_(0.5),
+    maxDeltaT_(GREAT),
+    maxRetries_(5),
+    schlierenScale_(15),
+    p_(readObject(mesh, "p"), mesh),
+    Uf_(readObject(mesh, "U"), mesh),
+    rho_(readDensity()),
+    rhoU_
+    (
+        newObject(mesh, "rhoU", false),
+        mesh,
+        dimensionedVector("zero", dimDensity*dimVelocity, Zero)
+    ),
+    rhoE_
+    (
+        newObject(mesh, "rhoE", false),
+        mesh,
+        dimensionedScalar("zero", dimPressure, 0.0)
+    ),
+    T_
+    (
+        newObject(mesh, "T", true),
+        mesh,
+        dimensionedScalar("zero", dimTemperature, 0.0)
+    ),
+    Mach_
+    (
+        newObject(mesh, "Mach", true),
+        mesh,
+        dimensionedScalar("zero", dimless, 0.0)
+    ),
+    schlieren_
+    (
+        newObject(mesh, "schlieren", true),
+        mesh,
+        dimensionedScalar("one", dimless, 1.0)
+    ),
+    nSteps_(0),
+    nFallback_(0),
+    nRetries_(0),
+    cgTotal_(0)
+{
+    Info<< "Ideal gas: gamma " << gas_.gamma() << ", R " << gas_.R() << nl;
+    checkInitial();
+
+    if (!dict_.isDict("gas"))
+    {
+        missingEntry(dict_, "gas", "a sub-dictionary with the gas settings");
+    }
+    const dictionary& gasDict = dict_.subDict("gas");
+    CFL_ = getPositive(gasDict, "CFL", 0.5);
+    maxDeltaT_ = getPositive(gasDict, "maxDeltaT", GREAT);
+    maxRetries_ = getLabelAtLeast(gasDict, "maxRetries", 5, 0);
+    schlierenScale_ = getPositive(gasDict, "schlierenScale", 15);
+
+    scheme_ = gasFluxScheme::New(gasDict);
+
+    // Boundary conditions of the patches the lines end on
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    bcs_.setSize(patches.size());
+    const dictionary& bDict = dict_.subOrEmptyDict("boundaries");
+    Info<< "Gas boundaries:" << nl;
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!view_.active(d)) continue;
+        for (const auto& s : view_.segments(d))
+        {
+            for (const label pi : {s.lowPatch, s.highPatch})
+            {
+                if (bcs_.set(pi)) continue;
+                const polyPatch& pp = patches[pi];
+                gasBoundary::primitiveState st{0, Zero, 0};
+                const scalarField& pb = p_.boundaryField()[pi];
+                const scalarField& rb = rho_.boundaryField()[pi];
+                const vectorField& ub = Uf_.boundaryField()[pi];
+                if (pp.size())
+                {
+                    st.p = average(pb);
+                    st.rho = average(rb);
+                    st.U = average(ub);
+                }
+                bcs_.set
+                (
+                    pi,
+                    gasBoundary::New
+                    (
+                        pp.name(), pp.type(), bDict, gas_, st
+                    )
+                );
+                Info<< "    " << pp.name() << " (" << pp.type() << "): "
+                    << bcs_[pi].type() << nl;
+            }
+        }
+    }
+    // A periodic line must be periodic at both ends and span the domain
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!view_.active(d)) continue;
+        for (const auto& s : view_.segments(d))
+        {
+            const bool lo =
+                bcs_[s.lowPatch].kindOf() == gasBoundary::kind::periodic;
+            const bool hi =
+                bcs_[s.highPatch].kindOf() == gasBoundary::kind::periodic;
+            if ((lo || hi) && !(lo && hi && s.length == view_.n(d)))
+            {
+                FatalIOErrorInFunction(dict_)
+                    << "A line along " << "xyz"[d] << " starting at cell "
+                    << view_.cellAt()[s.start] << " ends on patches "
+                    << patches[s.lowPatch].name() << " and "
+                    << patches[s.highPatch].name() << nl
+                    << "    allowed: periodic conditions on both ends of"
+                    << " lines that span the whole domain" << nl
+                    << exit(FatalIOError);
+            }
+        }
+    }
+
+    op_.reset(new eulerOperator(view_, gas_, scheme_(), bcs_));
+    stepper_ = gasStepper::New(gasDict, op_());
+
+    U_.resize(view_.nLattice());
+    Unew_.resize(view_.nLattice());
+    fromFields();
+    toFields();
+    updateDerived();
+
+    word limiter;
+    scalar speed;
+    stepper_->stableDeltaT(U_, CFL_, speed, limiter);
+    Info<< "Gas solver: stepper " << gasDict.get<word>("stepper")
+        << ", scheme " << gasDict.get<word>("scheme")
+        << ", " << gasStepper::rkOrderNames
+           [
+               getEnum
+               (
+                   gasDict, "timeIntegration", gasStepper::rkOrderNames,
+                   gasStepper::rkOrder::RK3
+               )
+           ]
+        << ", CFL " << CFL_ << nl;
+    scalar m, e;
+    vector mom;
+    totals(m, mom, e);
+    Info<< "Initial totals: mass " << m << ", momentum " << mom
+        << ", energy " << e << nl << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::gasDynamics::step(Time& runTime)
+{
+    word limiter;
+    scalar speed = 0;
+    scalar dt = stepper_->stableDeltaT(U_, CFL_, speed, limiter);
+    dt = min(dt, maxDeltaT_);
+
+    // Land on write times and the end time without exceeding the CFL step
+    const scalar toWrite = timeToNextWrite();
+    const scalar toEnd = runTime.endTime().value() - runTime.value();
+    const scalar target = min(toWrite, toEnd);
+    if (target > 0 && target < GREAT)
+    {
+        const scalar n = std::ceil(target/dt - 1e-9);
+        dt = target/max(n, scalar(1));
+    }
+
+    gasStepper::report rep;
+    label tries = 0;
+    while (!stepper_->advance(U_, dt, Unew_, rep))
+    {
+        if (tries == maxRetries_)
+        {
+            // Write the last good state and stop
+            toFields();
+            updateDerived();
+            runTime.writeNow();
+            const label celli = view_.cellAt()[rep.failedCell];
+            FatalErrorInFunction
+                << "The gas state failed in the step from time "
+                << runTime.timeName() << " (dt " << dt << ", after "
+                << tries << " halvings): " << rep.failure.c_str() << nl
+                << "    in cell " << celli << " at " << mesh_.cellCentres()[celli]
+                << nl << "    The last good state is written at time "
+                << runTime.timeName() << exit(FatalError);
+        }
+        ++tries;
+        ++nRetries_;
+        dt *= 0.5;
+        Info<< "    step failed (" << rep.failure.c_str() << " in cell "
+            << view_.cellAt()[rep.failedCell] << "); retrying with dt "
+            << dt << nl;
+        rep = gasStepper::report();
+    }
+
+    runTime.setDeltaT(dt, false);
+    ++runTime;
+    std::swap(U_, Unew_);
+    toFields();
+
+    ++nSteps_;
+    nFallback_ += rep.fallbackCells;
+    cgTotal_ += rep.cgIterations;
+
+    scalar acoustic = 0;
+    stepper_->acousticRate(U_, acoustic);
+    Info<< "Step " << runTime.timeIndex() << "  Time = " << runTime.timeName()
+        << "  dt = " << dt << "  maxSpeed = " << speed << " (" << limiter
+        << ")";
+    if (rep.cgIterations > 0)
+    {
+        Info<< "  CG iterations = " << rep.cgIterations;
+    }
+    if (rep.fallbackCells > 0)
+    {
+        Info<< "  firstOrderCells = " << rep.fallbackCells;
+    }
+    Info<< nl;
+
+    if (runTime.writeTime())
+    {
+        updateDerived();
+        scalar m, e;
+        vector mom;
+        totals(m, mom, e);
+        Info<< "    totals: mass " << m << ", momentum " << mom
+            << ", energy " << e << nl
+            << "    ExecutionTime = " << runTime.elapsedCpuTime() << " s"
+            << "  ClockTime = " << runTime.elapsedClockTime() << " s"
+            << nl;
+    }
+}
+
+
+void Foam::gasDynamics::toFields()
+{
+    const auto& lat = view_.latticeOf();
+    scalarField& rho = rho_.primitiveFieldRef();
+    vectorField& U = Uf_.primitiveFieldRef();
+    scalarField& p = p_.primitiveFieldRef();
+    vectorField& rhoU = rhoU_.primitiveFieldRef();
+    scalarField& rhoE = rhoE_.primitiveFieldRef();
+    forAll(rho, celli)
+    {
+        const label i = lat[celli];
+        const double r = U_.q[0][i];
+        rho[celli] = r;
+        rhoU[celli] = vector(U_.q[1][i], U_.q[2][i], U_.q[3][i]);
+        U[celli] = rhoU[celli]/r;
+        rhoE[celli] = U_.q[4][i];
+        p[celli] = gas_.pressure
+        (
+            r, U_.q[1][i], U_.q[2][i], U_.q[3][i], U_.q[4][i]
+        );
+    }
+}
+
+
+void Foam::gasDynamics::updateDerived()
+{
+    rho_.correctBoundaryConditions();
+    Uf_.correctBoundaryConditions();
+    p_.correctBoundaryConditions();
+    rhoU_.correctBoundaryConditions();
+    rhoE_.correctBoundaryConditions();
+
+    forAll(T_, celli)
+    {
+        T_[celli] = gas_.temperature(rho_[celli], p_[celli]);
+        Mach_[celli] =
+            mag(Uf_[celli])/gas_.soundSpeed(rho_[celli], p_[celli]);
+    }
+    T_.correctBoundaryConditions();
+    Mach_.correctBoundaryConditions();
+
+    const volScalarField magGrad(mag(fvc::grad(rho_)));
+    const scalar maxGrad = max(gMax(magGrad.primitiveField()), VSMALL);
+    schlieren_.primitiveFieldRef() =
+        exp(-schlierenScale_*magGrad.primitiveField()/maxGrad);
+    schlieren_.correctBoundaryConditions();
+}
+
+
+void Foam::gasDynamics::totals
+(
+    scalar& mass,
+    vector& momentum,
+    scalar& energy
+) const
+{
+    const scalar V = view_.cellVolume();
+    mass = 0;
+    energy = 0;
+    momentum = Zero;
+    for (const label i : view_.latticeOf())
+    {
+        mass += U_.q[0][i];
+        momentum += vector(U_.q[1][i], U_.q[2][i], U_.q[3][i]);
+        energy += U_.q[4][i];
+    }
+    mass *= V;
+    momentum *= V;
+    energy *= V;
+}
+
+
+void Foam::gasDynamics::summary() const
+{
+    Info<< nl << "Gas solver summary: " << nSteps_ << " steps, "
+        << view_.nCells() << " cells, " << nSteps_*view_.nCells()
+        << " cell updates";
+    if (cgTotal_ > 0)
+    {
+        Info<< ", CG iterations " << cgTotal_ << " (mean "
+            << scalar(cgTotal_)/max(nSteps_, label(1)) << " per step)";
+    }
+    Info<< ", first-order fallback cells " << nFallback_
+        << ", halved steps " << nRetries_ << nl;
+}
+
+
+// ************************************************************************* //

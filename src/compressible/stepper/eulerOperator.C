@@ -1,0 +1,238 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "eulerOperator.H"
+#include <algorithm>
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::eulerOperator::eulerOperator
+(
+    const cartesianMesh& mesh,
+    const idealGas& gas,
+    const gasFluxScheme& scheme,
+    const PtrList<gasBoundary>& bcs
+)
+:
+    mesh_(mesh),
+    gas_(gas),
+    scheme_(scheme),
+    bcs_(bcs),
+    G_(scheme.nGhost())
+{
+    label maxL = 0;
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!mesh_.active(d)) continue;
+        for (auto& a : F_[d]) a.assign(mesh_.nFaces(d), 0.0);
+        for (const auto& s : mesh_.segments(d))
+        {
+            maxL = std::max(maxL, s.length);
+            if (s.length < G_)
+            {
+                const bool periodic =
+                    bcs_[s.lowPatch].kindOf() == gasBoundary::kind::periodic;
+                if (periodic)
+                {
+                    FatalErrorInFunction
+                        << "A periodic line along " << "xyz"[d] << " has "
+                        << s.length << " cells; the scheme needs at least "
+                        << G_ << exit(FatalError);
+                }
+            }
+        }
+    }
+    for (auto& b : buf_) b.assign(maxL + 2*G_, 0.0);
+    for (auto& b : Fline_) b.assign(maxL + 1, 0.0);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::gasLine Foam::eulerOperator::gather
+(
+    const gasState& U,
+    label d,
+    const cartesianMesh::segment& s,
+    label nGhost,
+    bool advective
+)
+{
+    gasLine line;
+    for (int c = 0; c < 5; ++c) line.q[c] = buf_[c].data();
+    line.L = s.length;
+    line.G = nGhost;
+    line.normal = d;
+    line.gamma = gas_.gamma();
+    line.advective = advective;
+
+    const label st = mesh_.stride(d);
+    for (int c = 0; c < 5; ++c)
+    {
+        const double* src = U.q[c].data() + s.start;
+        double* dst = line.q[c] + nGhost;
+        for (label m = 0; m < s.length; ++m) dst[m] = src[m*st];
+    }
+
+    // Short non-periodic lines: the mirror/extrapolation partners beyond
+    // the line repeat its last cell
+    bcs_[s.lowPatch].fillGhosts(line, false);
+    bcs_[s.highPatch].fillGhosts(line, true);
+    return line;
+}
+
+
+void Foam::eulerOperator::wallFace(label d, label f)
+{
+    F_[d][0][f] = 0;
+    F_[d][4][f] = 0;
+    for (label t = 0; t < 3; ++t)
+    {
+        if (t != d) F_[d][1 + t][f] = 0;
+    }
+}
+
+
+const Foam::cartesianMesh::segment& Foam::eulerOperator::segmentOfFace
+(
+    label d,
+    label f
+) const
+{
+    const auto& segs = mesh_.segments(d);
+    auto it = std::upper_bound
+    (
+        segs.begin(), segs.end(), f,
+        [](label face, const cartesianMesh::segment& s)
+        {
+            return face < s.faceOffset;
+        }
+    );
+    return *(it - 1);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::eulerOperator::computeFluxes(const gasState& U, bool advective)
+{
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!mesh_.active(d)) continue;
+        for (const auto& s : mesh_.segments(d))
+        {
+            if (s.length < G_)
+            {
+                // Too short for the scheme's ghosts: first order
+                const gasLine line = gather(U, d, s, 1, advective);
+                for (label m = 0; m <= s.length; ++m)
+                {
+                    double qL[5], qR[5], Ff[5];
+                    for (int c = 0; c < 5; ++c)
+                    {
+                        qL[c] = line.q[c][m];
+                        qR[c] = line.q[c][m + 1];
+                    }
+                    gasFluxScheme::firstOrderFlux
+                    (
+                        qL, qR, d, gas_.gamma(), advective, Ff
+                    );
+                    for (int c = 0; c < 5; ++c)
+                    {
+                        F_[d][c][s.faceOffset + m] = Ff[c];
+                    }
+                }
+            }
+            else
+            {
+                const gasLine line = gather(U, d, s, G_, advective);
+                double* F[5];
+                for (int c = 0; c < 5; ++c)
+                {
+                    F[c] = F_[d][c].data() + s.faceOffset;
+                }
+                scheme_.lineFluxes(line, F);
+            }
+            if (bcs_[s.lowPatch].kindOf() == gasBoundary::kind::wall)
+            {
+                wallFace(d, s.faceOffset);
+            }
+            if (bcs_[s.highPatch].kindOf() == gasBoundary::kind::wall)
+            {
+                wallFace(d, s.faceOffset + s.length);
+            }
+        }
+    }
+}
+
+
+void Foam::eulerOperator::firstOrderFaces
+(
+    const gasState& U,
+    label idx,
+    bool advective
+)
+{
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!mesh_.active(d)) continue;
+        const label f0 = mesh_.lowFaceOf(d)[idx];
+        const cartesianMesh::segment& s = segmentOfFace(d, f0);
+        const label m = f0 - s.faceOffset;      // cell position in segment
+        const gasLine line = gather(U, d, s, 1, advective);
+        for (label face = m; face <= m + 1; ++face)
+        {
+            double qL[5], qR[5], Ff[5];
+            for (int c = 0; c < 5; ++c)
+            {
+                qL[c] = line.q[c][face];
+                qR[c] = line.q[c][face + 1];
+            }
+            gasFluxScheme::firstOrderFlux
+            (
+                qL, qR, d, gas_.gamma(), advective, Ff
+            );
+            for (int c = 0; c < 5; ++c)
+            {
+                F_[d][c][s.faceOffset + face] = Ff[c];
+            }
+        }
+        if (m == 0 && bcs_[s.lowPatch].kindOf() == gasBoundary::kind::wall)
+        {
+            wallFace(d, s.faceOffset);
+        }
+        if
+        (
+            m == s.length - 1
+         && bcs_[s.highPatch].kindOf() == gasBoundary::kind::wall
+        )
+        {
+            wallFace(d, s.faceOffset + s.length);
+        }
+        // A periodic line's two end faces are one face
+        if (bcs_[s.lowPatch].kindOf() == gasBoundary::kind::periodic)
+        {
+            if (m == 0)
+            {
+                for (int c = 0; c < 5; ++c)
+                {
+                    F_[d][c][s.faceOffset + s.length] =
+                        F_[d][c][s.faceOffset];
+                }
+            }
+            else if (m == s.length - 1)
+            {
+                for (int c = 0; c < 5; ++c)
+                {
+                    F_[d][c][s.faceOffset] =
+                        F_[d][c][s.faceOffset + s.length];
+                }
+            }
+        }
+    }
+}
+
+
+// ************************************************************************* //

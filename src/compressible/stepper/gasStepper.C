@@ -1,0 +1,210 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "gasStepper.H"
+#include "dictionaryChecks.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(gasStepper, 0);
+    defineRunTimeSelectionTable(gasStepper, dictionary);
+}
+
+const Foam::Enum<Foam::gasStepper::rkOrder>
+Foam::gasStepper::rkOrderNames
+({
+    { rkOrder::RK2, "RK2" },
+    { rkOrder::RK3, "RK3" },
+});
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::gasStepper::gasStepper(const dictionary& dict, eulerOperator& op)
+:
+    op_(op),
+    mesh_(op.mesh()),
+    gamma_(op.gas().gamma()),
+    rk_(dictionaryChecks::getEnum
+    (
+        dict, "timeIntegration", rkOrderNames, rkOrder::RK3
+    ))
+{
+    const auto& lat = mesh_.latticeOf();
+    cells_.assign(lat.begin(), lat.end());
+    std::sort(cells_.begin(), cells_.end());
+    U1_.resize(mesh_.nLattice());
+    U2_.resize(mesh_.nLattice());
+    mark_.assign(mesh_.nLattice(), 0);
+}
+
+
+Foam::autoPtr<Foam::gasStepper> Foam::gasStepper::New
+(
+    const dictionary& dict,
+    eulerOperator& op
+)
+{
+    word name;
+    auto ctor = dictionaryChecks::selectConstructor
+    (
+        dict, "stepper", *dictionaryConstructorTablePtr_, name
+    );
+    return autoPtr<gasStepper>(ctor(dict, op));
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+bool Foam::gasStepper::stage
+(
+    const gasState& U0,
+    const gasState& Us,
+    scalar a,
+    scalar b,
+    scalar dt,
+    bool advective,
+    gasState& out,
+    report& rep
+)
+{
+    op_.computeFluxes(Us, advective);
+
+    auto update = [&](label i)
+    {
+        double r[5];
+        op_.rhs(i, r);
+        for (int c = 0; c < 5; ++c)
+        {
+            out.q[c][i] = a*U0.q[c][i] + b*(Us.q[c][i] + dt*r[c]);
+        }
+    };
+
+    const label fallbackBefore = rep.fallbackCells;
+    std::vector<label> bad;
+    for (const label i : cells_)
+    {
+        update(i);
+        if (!out.admissible(i, gamma_)) bad.push_back(i);
+    }
+
+    // Positivity fallback: first-order fluxes around the offending cells
+    for (label pass = 0; pass < 4 && !bad.empty(); ++pass)
+    {
+        std::vector<label> touched;
+        for (const label i : bad)
+        {
+            op_.firstOrderFaces(Us, i, advective);
+            ++rep.fallbackCells;
+            auto touch = [&](label j)
+            {
+                if (j >= 0 && j < mesh_.nLattice() && !mark_[j]
+                 && mesh_.cellAt()[j] >= 0)
+                {
+                    mark_[j] = 1;
+                    touched.push_back(j);
+                }
+            };
+            touch(i);
+            for (label d = 0; d < 3; ++d)
+            {
+                if (!mesh_.active(d)) continue;
+                touch(i - mesh_.stride(d));
+                touch(i + mesh_.stride(d));
+            }
+        }
+        bad.clear();
+        for (const label j : touched)
+        {
+            mark_[j] = 0;
+            update(j);
+            if (!out.admissible(j, gamma_)) bad.push_back(j);
+        }
+    }
+
+    // A replaced face of a periodic line's end cell also belongs to the cell
+    // at its other end: refresh every update once, so no cell keeps a stale
+    // flux and the stage stays conservative
+    if (fallbackBefore != rep.fallbackCells && bad.empty())
+    {
+        for (const label i : cells_)
+        {
+            update(i);
+            if (!out.admissible(i, gamma_)) bad.push_back(i);
+        }
+    }
+
+    if (!bad.empty())
+    {
+        rep.failedCell = bad.front();
+        rep.failure =
+            advective
+          ? "non-positive density or pressure after the advection"
+          : "non-positive density or pressure";
+        return false;
+    }
+    return true;
+}
+
+
+bool Foam::gasStepper::rungeKutta
+(
+    const gasState& U,
+    scalar dt,
+    bool advective,
+    gasState& out,
+    report& rep
+)
+{
+    if (rk_ == rkOrder::RK2)
+    {
+        // TVD RK2 (Heun)
+        return
+            stage(U, U, 0, 1, dt, advective, U1_, rep)
+         && stage(U, U1_, 0.5, 0.5, dt, advective, out, rep);
+    }
+    // TVD RK3 (Shu and Osher)
+    return
+        stage(U, U, 0, 1, dt, advective, U1_, rep)
+     && stage(U, U1_, 0.75, 0.25, dt, advective, U2_, rep)
+     && stage(U, U2_, 1.0/3.0, 2.0/3.0, dt, advective, out, rep);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::gasStepper::acousticRate
+(
+    const gasState& U,
+    scalar& maxSpeed
+) const
+{
+    scalar rate = 0;
+    maxSpeed = 0;
+    for (const label i : cells_)
+    {
+        const double rho = U.q[0][i];
+        const double u[3] =
+            {U.q[1][i]/rho, U.q[2][i]/rho, U.q[3][i]/rho};
+        const double p = (gamma_ - 1)
+           *(U.q[4][i] - 0.5*rho*(u[0]*u[0] + u[1]*u[1] + u[2]*u[2]));
+        const double c = std::sqrt(std::abs(gamma_*p/rho));
+        double r = 0;
+        for (label d = 0; d < 3; ++d)
+        {
+            if (mesh_.active(d)) r += (std::abs(u[d]) + c)/mesh_.dx(d);
+        }
+        rate = std::max(rate, r);
+        maxSpeed = std::max
+        (
+            maxSpeed,
+            std::sqrt(u[0]*u[0] + u[1]*u[1] + u[2]*u[2]) + c
+        );
+    }
+    return rate;
+}
+
+
+// ************************************************************************* //

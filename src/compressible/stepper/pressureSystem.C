@@ -1,0 +1,102 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "pressureSystem.H"
+#include <cmath>
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::pressureSystem::reset(label n)
+{
+    diag.assign(n, 0.0);
+    source.assign(n, 0.0);
+    owner.clear();
+    neighbour.clear();
+    coeff.clear();
+}
+
+
+void Foam::pressureSystem::multiply
+(
+    const std::vector<double>& x,
+    std::vector<double>& y
+) const
+{
+    const label n = size();
+    y.resize(n);
+    for (label i = 0; i < n; ++i) y[i] = diag[i]*x[i];
+    const label nf = label(coeff.size());
+    for (label f = 0; f < nf; ++f)
+    {
+        const label i = owner[f], j = neighbour[f];
+        y[i] -= coeff[f]*x[j];
+        y[j] -= coeff[f]*x[i];
+    }
+}
+
+
+Foam::label Foam::pressureSystem::solve
+(
+    std::vector<double>& x,
+    double tol,
+    label maxIter,
+    double& relResidual
+) const
+{
+    const label n = size();
+    r_.resize(n);
+    z_.resize(n);
+    p_.resize(n);
+
+    double bNorm = 0;
+    for (label i = 0; i < n; ++i) bNorm += source[i]*source[i];
+    bNorm = std::sqrt(bNorm);
+    if (bNorm == 0)
+    {
+        x.assign(n, 0.0);
+        relResidual = 0;
+        return 0;
+    }
+
+    multiply(x, Ap_);
+    double rz = 0, rr = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        r_[i] = source[i] - Ap_[i];
+        z_[i] = r_[i]/diag[i];
+        p_[i] = z_[i];
+        rz += r_[i]*z_[i];
+        rr += r_[i]*r_[i];
+    }
+
+    label iter = 0;
+    while (std::sqrt(rr) > tol*bNorm && iter < maxIter)
+    {
+        multiply(p_, Ap_);
+        double pAp = 0;
+        for (label i = 0; i < n; ++i) pAp += p_[i]*Ap_[i];
+        if (!(pAp > 0) || !std::isfinite(pAp)) break;  // breakdown
+        const double alpha = rz/pAp;
+        double rzNew = 0;
+        rr = 0;
+        for (label i = 0; i < n; ++i)
+        {
+            x[i] += alpha*p_[i];
+            r_[i] -= alpha*Ap_[i];
+            z_[i] = r_[i]/diag[i];
+            rzNew += r_[i]*z_[i];
+            rr += r_[i]*r_[i];
+        }
+        const double beta = rzNew/rz;
+        rz = rzNew;
+        for (label i = 0; i < n; ++i) p_[i] = z_[i] + beta*p_[i];
+        ++iter;
+    }
+    relResidual = std::sqrt(rr)/bNorm;
+    return iter;
+}
+
+
+// ************************************************************************* //

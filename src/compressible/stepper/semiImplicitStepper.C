@@ -1,0 +1,274 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "semiImplicitStepper.H"
+#include "dictionaryChecks.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace gasSteppers
+{
+    defineTypeNameAndDebug(semiImplicitStepper, 0);
+    addToRunTimeSelectionTable(gasStepper, semiImplicitStepper, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::gasSteppers::semiImplicitStepper::semiImplicitStepper
+(
+    const dictionary& dict,
+    eulerOperator& op
+)
+:
+    gasStepper(dict, op),
+    tol_(dictionaryChecks::getPositive(dict, "CGtolerance", 1e-10)),
+    maxIter_(dictionaryChecks::getLabelAtLeast(dict, "CGmaxIter", 1000, 1))
+{
+    Ustar_.resize(mesh_.nLattice());
+    unknownOf_.assign(mesh_.nLattice(), -1);
+    for (size_t k = 0; k < cells_.size(); ++k)
+    {
+        unknownOf_[cells_[k]] = label(k);
+    }
+    p_.assign(cells_.size(), 0.0);
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!mesh_.active(d)) continue;
+        const label nf = mesh_.nFaces(d);
+        uStarF_[d].assign(nf, 0.0);
+        rhoF_[d].assign(nf, 0.0);
+        uF_[d].assign(nf, 0.0);
+        pF_[d].assign(nf, 0.0);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::gasSteppers::semiImplicitStepper::stableDeltaT
+(
+    const gasState& U,
+    scalar CFL,
+    scalar& speed,
+    word& limiter
+) const
+{
+    auto pressure = [&](label i)
+    {
+        const double rho = U.q[0][i];
+        return (gamma_ - 1)*(U.q[4][i] - 0.5*(U.q[1][i]*U.q[1][i]
+          + U.q[2][i]*U.q[2][i] + U.q[3][i]*U.q[3][i])/rho);
+    };
+
+    scalar rate = 0;
+    scalar rateU = 0;
+    speed = 0;
+    const auto& cellAt = mesh_.cellAt();
+    const label nLat = mesh_.nLattice();
+    for (const label i : cells_)
+    {
+        const double rho = U.q[0][i];
+        double ru = 0, rp = 0, u2 = 0;
+        for (label d = 0; d < 3; ++d)
+        {
+            if (!mesh_.active(d)) continue;
+            const double ud = U.q[1 + d][i]/rho;
+            u2 += ud*ud;
+            ru += std::abs(ud)/mesh_.dx(d);
+
+            // Pressure difference across the cell (one-sided at ends)
+            const label st = mesh_.stride(d);
+            const label lo = i - st, hi = i + st;
+            const bool hasLo = lo >= 0 && cellAt[lo] >= 0
+                && mesh_.lowFaceOf(d)[lo] + 1 == mesh_.lowFaceOf(d)[i];
+            const bool hasHi = hi < nLat && cellAt[hi] >= 0
+                && mesh_.lowFaceOf(d)[i] + 1 == mesh_.lowFaceOf(d)[hi];
+            double dp = 0;
+            if (hasLo && hasHi) dp = 0.5*(pressure(hi) - pressure(lo));
+            else if (hasHi) dp = pressure(hi) - pressure(i);
+            else if (hasLo) dp = pressure(i) - pressure(lo);
+            rp += std::abs(dp)/(rho*mesh_.dx(d)*mesh_.dx(d));
+        }
+        speed = std::max(speed, std::sqrt(u2));
+        rateU = std::max(rateU, ru);
+        rate = std::max(rate, ru + std::sqrt(rp));
+    }
+    limiter = rate > 1.0001*rateU ? "|u|+pressure" : "|u|";
+    return rate > 0 ? CFL/rate : GREAT;
+}
+
+
+bool Foam::gasSteppers::semiImplicitStepper::advance
+(
+    const gasState& U,
+    scalar dt,
+    gasState& out,
+    report& rep
+)
+{
+    // 1. (3.10-3.12) advection, (3.13) rho^{n+1} = rho*
+    if (!rungeKutta(U, dt, true, Ustar_, rep))
+    {
+        return false;
+    }
+
+    const scalar V = mesh_.cellVolume();
+    const label n = label(cells_.size());
+    const PtrList<gasBoundary>& bcs = op_.boundaries();
+
+    auto pressure = [&](const gasState& S, label i)
+    {
+        const double rho = S.q[0][i];
+        return (gamma_ - 1)*(S.q[4][i] - 0.5*(S.q[1][i]*S.q[1][i]
+          + S.q[2][i]*S.q[2][i] + S.q[3][i]*S.q[3][i])/rho);
+    };
+
+    // 2.-3. (3.22) with (3.21): diagonal and source of each cell
+    sys_.reset(n);
+    for (label k = 0; k < n; ++k)
+    {
+        const label i = cells_[k];
+        const double pn = pressure(U, i);
+        const double ps = pressure(Ustar_, i);
+        const double a = V/(gamma_*pn*dt*dt);
+        sys_.diag[k] = a;
+        sys_.source[k] = a*ps;
+        p_[k] = ps;
+    }
+
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!mesh_.active(d)) continue;
+        const scalar A = V/mesh_.dx(d);
+        const scalar dx = mesh_.dx(d);
+        const label st = mesh_.stride(d);
+        for (const auto& s : mesh_.segments(d))
+        {
+            const bool periodic =
+                bcs[s.lowPatch].kindOf() == gasBoundary::kind::periodic;
+
+            auto coupleCells = [&](label f, label l, label r)
+            {
+                const double rhoF = 0.5*(Ustar_.q[0][l] + Ustar_.q[0][r]);
+                const double uS = 0.5
+                   *(
+                        Ustar_.q[1 + d][l]/Ustar_.q[0][l]
+                      + Ustar_.q[1 + d][r]/Ustar_.q[0][r]
+                    );
+                rhoF_[d][f] = rhoF;
+                uStarF_[d][f] = uS;
+                const label kl = unknownOf_[l], kr = unknownOf_[r];
+                sys_.couple(kl, kr, A/(rhoF*dx));
+                sys_.source[kl] -= A*uS/dt;
+                sys_.source[kr] += A*uS/dt;
+            };
+
+            for (label m = 1; m < s.length; ++m)
+            {
+                coupleCells
+                (
+                    s.faceOffset + m,
+                    s.start + (m - 1)*st,
+                    s.start + m*st
+                );
+            }
+
+            const label first = s.start;
+            const label last = s.start + (s.length - 1)*st;
+            if (periodic)
+            {
+                coupleCells(s.faceOffset, last, first);
+            }
+            else
+            {
+                double q[5];
+                for (int c = 0; c < 5; ++c) q[c] = Ustar_.q[c][first];
+                const double uLo = bcs[s.lowPatch].faceVelocity(q, d);
+                for (int c = 0; c < 5; ++c) q[c] = Ustar_.q[c][last];
+                const double uHi = bcs[s.highPatch].faceVelocity(q, d);
+                uF_[d][s.faceOffset] = uLo;
+                uF_[d][s.faceOffset + s.length] = uHi;
+                sys_.source[unknownOf_[first]] += A*uLo/dt;
+                sys_.source[unknownOf_[last]] -= A*uHi/dt;
+            }
+        }
+    }
+
+    rep.cgIterations = sys_.solve(p_, tol_, maxIter_, rep.cgResidual);
+    if (!std::isfinite(rep.cgResidual) || rep.cgResidual > 1e-3)
+    {
+        rep.failedCell = cells_.front();
+        rep.failure =
+            "the pressure system did not converge (relative residual "
+          + Foam::name(rep.cgResidual) + ")";
+        return false;
+    }
+
+    // 4. (3.21) face velocities and pressures, then the flux-form updates
+    for (int c = 0; c < 5; ++c) out.q[c] = Ustar_.q[c];
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!mesh_.active(d)) continue;
+        const scalar dx = mesh_.dx(d);
+        const label st = mesh_.stride(d);
+        std::vector<double>& uF = uF_[d];
+        std::vector<double>& pF = pF_[d];
+        for (const auto& s : mesh_.segments(d))
+        {
+            const bool periodic =
+                bcs[s.lowPatch].kindOf() == gasBoundary::kind::periodic;
+            auto face = [&](label f, label l, label r)
+            {
+                const double pl = p_[unknownOf_[l]], pr = p_[unknownOf_[r]];
+                uF[f] = uStarF_[d][f] - dt*(pr - pl)/(dx*rhoF_[d][f]);
+                pF[f] = 0.5*(pl + pr);
+            };
+            for (label m = 1; m < s.length; ++m)
+            {
+                face(s.faceOffset + m, s.start + (m-1)*st, s.start + m*st);
+            }
+            const label first = s.start;
+            const label last = s.start + (s.length - 1)*st;
+            if (periodic)
+            {
+                face(s.faceOffset, last, first);
+                uF[s.faceOffset + s.length] = uF[s.faceOffset];
+                pF[s.faceOffset + s.length] = pF[s.faceOffset];
+            }
+            else
+            {
+                pF[s.faceOffset] = p_[unknownOf_[first]];
+                pF[s.faceOffset + s.length] = p_[unknownOf_[last]];
+            }
+        }
+
+        const auto& lowFace = mesh_.lowFaceOf(d);
+        std::vector<double>& m = out.q[1 + d];
+        std::vector<double>& E = out.q[4];
+        for (const label i : cells_)
+        {
+            const label f = lowFace[i];
+            m[i] -= dt*(pF[f + 1] - pF[f])/dx;
+            E[i] -= dt*(pF[f + 1]*uF[f + 1] - pF[f]*uF[f])/dx;
+        }
+    }
+
+    for (const label i : cells_)
+    {
+        if (!out.admissible(i, gamma_))
+        {
+            rep.failedCell = i;
+            rep.failure = "non-positive pressure after the pressure step";
+            return false;
+        }
+    }
+    return true;
+}
+
+
+// ************************************************************************* //
