@@ -218,6 +218,9 @@ Foam::gasDynamics::gasDynamics(const fvMesh& mesh)
     nRetries_(0),
     cgTotal_(0)
 {
+    // A field built from a tmp does not keep its write option
+    rho_.writeOpt() = IOobject::AUTO_WRITE;
+
     Info<< "Ideal gas: gamma " << gas_.gamma() << ", R " << gas_.R() << nl;
     checkInitial();
 
@@ -320,8 +323,10 @@ Foam::gasDynamics::gasDynamics(const fvMesh& mesh)
     scalar m, e;
     vector mom;
     totals(m, mom, e);
+    const label prec = Info().precision(17);
     Info<< "Initial totals: mass " << m << ", momentum " << mom
         << ", energy " << e << nl << endl;
+    Info().precision(prec);
 }
 
 
