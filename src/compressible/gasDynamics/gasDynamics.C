@@ -230,6 +230,10 @@ Foam::gasDynamics::gasDynamics(const fvMesh& mesh)
     }
     const dictionary& gasDict = dict_.subDict("gas");
     CFL_ = getPositive(gasDict, "CFL", 0.5);
+    if (CFL_ > 1)
+    {
+        badEntry(gasDict, "CFL", Foam::name(CFL_), "0 < CFL <= 1");
+    }
     maxDeltaT_ = getPositive(gasDict, "maxDeltaT", GREAT);
     maxRetries_ = getLabelAtLeast(gasDict, "maxRetries", 5, 0);
     schlierenScale_ = getPositive(gasDict, "schlierenScale", 15);
