@@ -24,7 +24,17 @@ void Foam::gasFluxSchemes::WENO3::lineFluxes
 ) const
 {
     physicalFluxes(line);
-    splitLineFluxes<WENO3Reconstruction>(line, f_, lambda_, F);
+    if (characteristic_ && !line.advective)
+    {
+        characteristicLineFluxes<WENO3Reconstruction>
+        (
+            line, f_, lambda_, un_, c_, F
+        );
+    }
+    else
+    {
+        splitLineFluxes<WENO3Reconstruction>(line, f_, lambda_, F);
+    }
 }
 
 

@@ -24,7 +24,17 @@ void Foam::gasFluxSchemes::WENO5::lineFluxes
 ) const
 {
     physicalFluxes(line);
-    splitLineFluxes<WENO5Reconstruction>(line, f_, lambda_, F);
+    if (characteristic_ && !line.advective)
+    {
+        characteristicLineFluxes<WENO5Reconstruction>
+        (
+            line, f_, lambda_, un_, c_, F
+        );
+    }
+    else
+    {
+        splitLineFluxes<WENO5Reconstruction>(line, f_, lambda_, F);
+    }
 }
 
 

@@ -28,7 +28,9 @@ inline void stateFlux
     double gamma,
     bool advective,
     double f[5],
-    double& lambda
+    double& lambda,
+    double& unOut,
+    double& cOut
 )
 {
     const double rho = q[0];
@@ -40,6 +42,8 @@ inline void stateFlux
     f[2] = q[2]*un;
     f[3] = q[3]*un;
     f[4] = q[4]*un;
+    unOut = un;
+    cOut = std::sqrt(std::abs(gamma*p/rho));
     if (advective)
     {
         lambda = std::abs(un);
@@ -48,11 +52,36 @@ inline void stateFlux
     {
         f[1 + n] += p;
         f[4] += p*un;
-        lambda = std::abs(un) + std::sqrt(std::abs(gamma*p/rho));
+        lambda = std::abs(un) + cOut;
     }
 }
 
 } // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::gasFluxScheme::gasFluxScheme(const dictionary& dict)
+:
+    characteristic_(true)
+{
+    const word vars
+    (
+        dictionaryChecks::getAsOrDefault<word>
+        (
+            dict, "variables", "characteristic",
+            "characteristic or component"
+        )
+    );
+    if (vars != "characteristic" && vars != "component")
+    {
+        dictionaryChecks::badEntry
+        (
+            dict, "variables", vars, "characteristic or component"
+        );
+    }
+    characteristic_ = (vars == "characteristic");
+}
 
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
@@ -64,12 +93,18 @@ void Foam::gasFluxScheme::physicalFluxes(const gasLine& line) const
     {
         for (auto& f : f_) f.resize(N);
         lambda_.resize(N);
+        un_.resize(N);
+        c_.resize(N);
     }
     double q[5], f[5];
     for (label i = 0; i < N; ++i)
     {
         for (int c = 0; c < 5; ++c) q[c] = line.q[c][i];
-        stateFlux(q, line.normal, line.gamma, line.advective, f, lambda_[i]);
+        stateFlux
+        (
+            q, line.normal, line.gamma, line.advective, f, lambda_[i],
+            un_[i], c_[i]
+        );
         for (int c = 0; c < 5; ++c) f_[c][i] = f[c];
     }
 }
@@ -103,9 +138,9 @@ void Foam::gasFluxScheme::firstOrderFlux
     double F[5]
 )
 {
-    double fL[5], fR[5], lL, lR;
-    stateFlux(qL, normal, gamma, advective, fL, lL);
-    stateFlux(qR, normal, gamma, advective, fR, lR);
+    double fL[5], fR[5], lL, lR, un, c;
+    stateFlux(qL, normal, gamma, advective, fL, lL, un, c);
+    stateFlux(qR, normal, gamma, advective, fR, lR, un, c);
     const double alpha = std::max(lL, lR);
     for (int c = 0; c < 5; ++c)
     {

@@ -24,7 +24,17 @@ void Foam::gasFluxSchemes::upwind1::lineFluxes
 ) const
 {
     physicalFluxes(line);
-    splitLineFluxes<upwind1Reconstruction>(line, f_, lambda_, F);
+    if (characteristic_ && !line.advective)
+    {
+        characteristicLineFluxes<upwind1Reconstruction>
+        (
+            line, f_, lambda_, un_, c_, F
+        );
+    }
+    else
+    {
+        splitLineFluxes<upwind1Reconstruction>(line, f_, lambda_, F);
+    }
 }
 
 
