@@ -44,6 +44,14 @@ int main(int argc, char *argv[])
 
     gasDynamics gas(mesh);
 
+    // The controlDict's deltaT only matters to Time::run(), which would stop
+    // before the first step if it exceeded the end time: use the stable one
+    runTime.setDeltaT
+    (
+        min(gas.stableDeltaT(), runTime.endTime().value() - runTime.value()),
+        false
+    );
+
     Info<< "Starting time loop" << nl << endl;
 
     while (runTime.run())

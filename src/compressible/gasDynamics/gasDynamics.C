@@ -336,6 +336,14 @@ Foam::gasDynamics::gasDynamics(const fvMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::gasDynamics::stableDeltaT() const
+{
+    word limiter;
+    scalar speed = 0;
+    return min(stepper_->stableDeltaT(U_, CFL_, speed, limiter), maxDeltaT_);
+}
+
+
 void Foam::gasDynamics::step(Time& runTime)
 {
     word limiter;
