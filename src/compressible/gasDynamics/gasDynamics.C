@@ -213,6 +213,19 @@ Foam::gasDynamics::gasDynamics(const fvMesh& mesh)
         mesh,
         dimensionedScalar("one", dimless, 1.0)
     ),
+    phi_
+    (
+        IOobject
+        (
+            "phi",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("zero", dimMass/dimTime, 0.0)
+    ),
     nSteps_(0),
     nFallback_(0),
     nRetries_(0),
@@ -454,6 +467,7 @@ void Foam::gasDynamics::toFields()
 
 void Foam::gasDynamics::updateDerived()
 {
+    phi_ = fvc::interpolate(rhoU_) & mesh_.Sf();
     rho_.correctBoundaryConditions();
     Uf_.correctBoundaryConditions();
     p_.correctBoundaryConditions();
