@@ -10,40 +10,17 @@
 #include "upwind1.H"
 #include "pressureSystem.H"
 #include "idealGas.H"
-#include "IStringStream.H"
+#include "testHelpers.H"
 
 #include <gtest/gtest.h>
 #include <cmath>
 #include <vector>
 
 using namespace Foam;
+using testHelpers::dictOf;
 
 namespace
 {
-
-dictionary dictOf(const std::string& text)
-{
-    IStringStream is(text);
-    return dictionary(is);
-}
-
-// The FatalIOError message of f(), or "" if it did not stop
-template<class F>
-std::string errorOf(F f)
-{
-    FatalIOError.throwExceptions();
-    std::string msg;
-    try
-    {
-        f();
-    }
-    catch (const Foam::IOerror& err)
-    {
-        msg = err.message();
-    }
-    FatalIOError.dontThrowExceptions();
-    return msg;
-}
 
 // Physical Euler flux along direction n
 void eulerFlux(const double q[5], int n, double gamma, double f[5])
@@ -248,10 +225,10 @@ TEST(gasFlux, idealGasReadsBothForms)
     EXPECT_NEAR(mix.R(), R, 1e-6*R);
     EXPECT_NEAR(mix.gamma(), 1004.5/(1004.5 - R), 1e-6);
 
-    std::string m = errorOf([]{ idealGas g(dictOf("gamma 1; R 1;")); });
+    std::string m = testHelpers::ioErrorOf([]{ idealGas g(dictOf("gamma 1; R 1;")); });
     EXPECT_NE(m.find("'gamma'"), std::string::npos) << m;
     EXPECT_NE(m.find("> 1"), std::string::npos) << m;
 
-    m = errorOf([]{ idealGas g(dictOf("gamma 1.4; R -3;")); });
+    m = testHelpers::ioErrorOf([]{ idealGas g(dictOf("gamma 1.4; R -3;")); });
     EXPECT_NE(m.find("'R'"), std::string::npos) << m;
 }

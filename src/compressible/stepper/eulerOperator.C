@@ -84,6 +84,30 @@ Foam::gasLine Foam::eulerOperator::gather
 }
 
 
+void Foam::eulerOperator::firstOrderFace
+(
+    const gasLine& line,
+    const cartesianMesh::segment& s,
+    label m
+)
+{
+    double qL[5], qR[5], Ff[5];
+    for (int c = 0; c < 5; ++c)
+    {
+        qL[c] = line.q[c][line.G + m - 1];
+        qR[c] = line.q[c][line.G + m];
+    }
+    gasFluxScheme::firstOrderFlux
+    (
+        qL, qR, line.normal, line.gamma, line.advective, Ff
+    );
+    for (int c = 0; c < 5; ++c)
+    {
+        F_[line.normal][c][s.faceOffset + m] = Ff[c];
+    }
+}
+
+
 void Foam::eulerOperator::wallFace(label d, label f)
 {
     F_[d][0][f] = 0;
@@ -129,20 +153,7 @@ void Foam::eulerOperator::computeFluxes(const gasState& U, bool advective)
                 const gasLine line = gather(U, d, s, 1, advective);
                 for (label m = 0; m <= s.length; ++m)
                 {
-                    double qL[5], qR[5], Ff[5];
-                    for (int c = 0; c < 5; ++c)
-                    {
-                        qL[c] = line.q[c][m];
-                        qR[c] = line.q[c][m + 1];
-                    }
-                    gasFluxScheme::firstOrderFlux
-                    (
-                        qL, qR, d, gas_.gamma(), advective, Ff
-                    );
-                    for (int c = 0; c < 5; ++c)
-                    {
-                        F_[d][c][s.faceOffset + m] = Ff[c];
-                    }
+                    firstOrderFace(line, s, m);
                 }
             }
             else
@@ -182,23 +193,8 @@ void Foam::eulerOperator::firstOrderFaces
         const cartesianMesh::segment& s = segmentOfFace(d, f0);
         const label m = f0 - s.faceOffset;      // cell position in segment
         const gasLine line = gather(U, d, s, 1, advective);
-        for (label face = m; face <= m + 1; ++face)
-        {
-            double qL[5], qR[5], Ff[5];
-            for (int c = 0; c < 5; ++c)
-            {
-                qL[c] = line.q[c][face];
-                qR[c] = line.q[c][face + 1];
-            }
-            gasFluxScheme::firstOrderFlux
-            (
-                qL, qR, d, gas_.gamma(), advective, Ff
-            );
-            for (int c = 0; c < 5; ++c)
-            {
-                F_[d][c][s.faceOffset + face] = Ff[c];
-            }
-        }
+        firstOrderFace(line, s, m);
+        firstOrderFace(line, s, m + 1);
         if (m == 0 && bcs_[s.lowPatch].kindOf() == gasBoundary::kind::wall)
         {
             wallFace(d, s.faceOffset);
