@@ -229,7 +229,10 @@ Foam::gasDynamics::gasDynamics(const fvMesh& mesh)
     nSteps_(0),
     nFallback_(0),
     nRetries_(0),
-    cgTotal_(0)
+    cgTotal_(0),
+    nCornerCells_(0),
+    cornerMass_(0),
+    cornerEnergy_(0)
 {
     // A field built from a tmp does not keep its write option
     rho_.writeOpt() = IOobject::AUTO_WRITE;
@@ -317,6 +320,28 @@ Foam::gasDynamics::gasDynamics(const fvMesh& mesh)
     op_.reset(new eulerOperator(view_, gas_, scheme_(), bcs_));
     stepper_ = gasStepper::New(gasDict, op_());
 
+    corners_.reset
+    (
+        new wallCorners
+        (
+            view_, gas_, bcs_,
+            getEnum
+            (
+                gasDict, "cornerTreatment", wallCorners::treatmentNames,
+                wallCorners::treatment::none
+            ),
+            getLabelAtLeast(gasDict, "cornerResetCells", 0, 0),
+            scheme_->nGhost()
+        )
+    );
+    if (corners_->type() != wallCorners::treatment::none)
+    {
+        Info<< "Convex wall corners: " << label(corners_->corners().size())
+            << ", treatment "
+            << wallCorners::treatmentNames[corners_->type()]
+            << " (up to " << corners_->nResetCells() << " wall cells)" << nl;
+    }
+
     U_.resize(view_.nLattice());
     Unew_.resize(view_.nLattice());
     fromFields();
@@ -401,6 +426,8 @@ void Foam::gasDynamics::step(Time& runTime)
             << dt << nl;
         rep = gasStepper::report();
     }
+
+    nCornerCells_ += corners_->correct(Unew_, cornerMass_, cornerEnergy_);
 
     runTime.setDeltaT(dt, false);
     ++runTime;
@@ -526,6 +553,18 @@ void Foam::gasDynamics::summary() const
     }
     Info<< ", first-order fallback cells " << nFallback_
         << ", halved steps " << nRetries_ << nl;
+    if (corners_->type() == wallCorners::treatment::entropyReset)
+    {
+        Info<< "Corner entropy resets: " << nCornerCells_ << " cells; mass "
+            << "added " << cornerMass_ << ", energy added " << cornerEnergy_
+            << " (not conservative)" << nl;
+    }
+    else if (corners_->type() == wallCorners::treatment::entropyTransfer)
+    {
+        Info<< "Corner entropy transfers: " << nCornerCells_ << " cells;"
+            << " mass moved " << cornerMass_ << ", energy moved "
+            << cornerEnergy_ << " (conservative)" << nl;
+    }
 }
 
 

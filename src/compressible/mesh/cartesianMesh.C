@@ -5,6 +5,7 @@
 
 #include "cartesianMesh.H"
 #include "boundBox.H"
+#include <algorithm>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -234,6 +235,24 @@ Foam::cartesianMesh::cartesianMesh(const fvMesh& mesh)
         << n_[0] << " x " << n_[1] << " x " << n_[2]
         << ", " << nCells() << " cells of " << dx_[0] << " x " << dx_[1]
         << " x " << dx_[2] << ", " << nSeg << " line segments" << nl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const Foam::cartesianMesh::segment& Foam::cartesianMesh::segmentOfFace
+(
+    label d,
+    label f
+) const
+{
+    const auto& segs = segments_[d];
+    auto it = std::upper_bound
+    (
+        segs.begin(), segs.end(), f,
+        [](label face, const segment& s) { return face < s.faceOffset; }
+    );
+    return *(it - 1);
 }
 
 

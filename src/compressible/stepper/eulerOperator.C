@@ -119,25 +119,6 @@ void Foam::eulerOperator::wallFace(label d, label f)
 }
 
 
-const Foam::cartesianMesh::segment& Foam::eulerOperator::segmentOfFace
-(
-    label d,
-    label f
-) const
-{
-    const auto& segs = mesh_.segments(d);
-    auto it = std::upper_bound
-    (
-        segs.begin(), segs.end(), f,
-        [](label face, const cartesianMesh::segment& s)
-        {
-            return face < s.faceOffset;
-        }
-    );
-    return *(it - 1);
-}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::eulerOperator::computeFluxes(const gasState& U, bool advective)
@@ -190,7 +171,7 @@ void Foam::eulerOperator::firstOrderFaces
     {
         if (!mesh_.active(d)) continue;
         const label f0 = mesh_.lowFaceOf(d)[idx];
-        const cartesianMesh::segment& s = segmentOfFace(d, f0);
+        const cartesianMesh::segment& s = mesh_.segmentOfFace(d, f0);
         const label m = f0 - s.faceOffset;      // cell position in segment
         const gasLine line = gather(U, d, s, 1, advective);
         firstOrderFace(line, s, m);
