@@ -30,6 +30,8 @@ PATCHES = [("left", "cyclic"), ("right", "cyclic"), ("sides", "empty")]
 
 
 def init(case, n, u, p, a):
+    import os
+    os.makedirs(case + "/0", exist_ok=True)
     x = centres(n)
     rho = ["%.17g" % (1 + a * math.sin(2 * math.pi * xi)) for xi in x]
     open(case + "/0/rho", "w").write(

@@ -9,6 +9,8 @@ import math
 import sys
 
 case, kind = sys.argv[1], sys.argv[2]
+import os
+os.makedirs(case + "/0", exist_ok=True)
 n = 40
 patch = "cyclic" if kind == "periodic" else "zeroGradient"
 walls = kind != "periodic"
