@@ -1,0 +1,308 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "graphNetTrainer.H"
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+namespace gnnTorch
+{
+
+// * * * * * * * * * * * * * * * * Constructor  * * * * * * * * * * * * * * //
+
+graphNetTrainer::graphNetTrainer
+(
+    const bsmsData::hierarchy& h,
+    const graphNetConfig& netConfig,
+    const trainerConfig& config
+)
+:
+    netConfig_(netConfig),
+    config_(config)
+{
+    if
+    (
+        !config_.noiseStd.empty()
+     && config_.noiseStd.size() != 1
+     && int(config_.noiseStd.size()) != netConfig_.nIn
+    )
+    {
+        throw std::runtime_error
+        (
+            "graphNetTrainer: noiseStd has "
+          + std::to_string(config_.noiseStd.size())
+          + " values; give none, one, or one per input component ("
+          + std::to_string(netConfig_.nIn) + ")"
+        );
+    }
+    torch::manual_seed(config_.seed);
+    net_ = newGraphNetwork(h, netConfig_);
+    inNorm_ = normaliser(netConfig_.nIn, config_.normAccumulations);
+    outNorm_ = normaliser(netConfig_.nOut, config_.normAccumulations);
+    optimizer_.reset
+    (
+        new torch::optim::Adam
+        (
+            net_->parameters(), torch::optim::AdamOptions(config_.lr)
+        )
+    );
+}
+
+
+// * * * * * * * * * * * * * * Private Functions * * * * * * * * * * * * * * //
+
+torch::Tensor graphNetTrainer::checked
+(
+    const torch::Tensor& x,
+    const int nComp
+) const
+{
+    const bool ok =
+        (x.dim() == 2 || x.dim() == 3)
+     && x.size(-1) == nComp
+     && x.size(-2) == net_->nNodes();
+    if (!ok)
+    {
+        throw std::runtime_error
+        (
+            "graphNetTrainer: expected [nodes, " + std::to_string(nComp)
+          + "] or [batch, nodes, " + std::to_string(nComp) + "] with "
+          + std::to_string(net_->nNodes()) + " nodes, got "
+          + c10::str(x.sizes())
+        );
+    }
+    return x.to(torch::kFloat32);
+}
+
+
+torch::Tensor graphNetTrainer::fromPlain
+(
+    const std::vector<double>& x,
+    const int nComp
+) const
+{
+    const std::int64_t n = net_->nNodes()*nComp;
+    if (std::int64_t(x.size()) % n != 0 || x.empty())
+    {
+        throw std::runtime_error
+        (
+            "graphNetTrainer: " + std::to_string(x.size())
+          + " values are not a whole number of samples of "
+          + std::to_string(net_->nNodes()) + " nodes x "
+          + std::to_string(nComp) + " components"
+        );
+    }
+    return torch::tensor(x, torch::TensorOptions().dtype(torch::kFloat64))
+        .reshape({-1, net_->nNodes(), nComp}).to(torch::kFloat32);
+}
+
+
+// * * * * * * * * * * * * * * * * * Training  * * * * * * * * * * * * * * * //
+
+double graphNetTrainer::learningRate() const
+{
+    return
+        config_.lrMin
+      + (config_.lr - config_.lrMin)
+       *std::pow(config_.lrDecay, double(step_)/config_.decaySteps);
+}
+
+
+double graphNetTrainer::trainStep
+(
+    const torch::Tensor& xIn,
+    const torch::Tensor& yIn
+)
+{
+    torch::Tensor x = checked(xIn, netConfig_.nIn);
+    const torch::Tensor y = checked(yIn, netConfig_.nOut);
+
+    if (step_ < config_.normAccumulations)
+    {
+        inNorm_->accumulate(x);
+        outNorm_->accumulate(y);
+    }
+
+    // Noise (4.4.2.5), reproducible from (seed, step)
+    if (!config_.noiseStd.empty())
+    {
+        std::vector<float> s(netConfig_.nIn);
+        for (int c = 0; c < netConfig_.nIn; ++c)
+        {
+            s[c] = float
+            (
+                config_.noiseStd.size() == 1
+              ? config_.noiseStd[0] : config_.noiseStd[c]
+            );
+        }
+        auto gen = at::detail::createCPUGenerator
+        (
+            config_.seed*0x9E3779B97F4A7C15ULL + std::uint64_t(step_) + 1
+        );
+        x = x + torch::randn(x.sizes(), gen, x.options())
+           *torch::tensor(s, x.options());
+    }
+
+    for (auto& group : optimizer_->param_groups())
+    {
+        static_cast<torch::optim::AdamOptions&>(group.options())
+            .lr(learningRate());
+    }
+
+    net_->train();
+    optimizer_->zero_grad();
+    const torch::Tensor pred = net_->forward(inNorm_->forward(x));
+    const torch::Tensor l = torch::mse_loss(pred, outNorm_->forward(y));
+    l.backward();
+    optimizer_->step();
+    ++step_;
+    return l.item<double>();
+}
+
+
+double graphNetTrainer::trainStep
+(
+    const std::vector<double>& x,
+    const std::vector<double>& y
+)
+{
+    return trainStep(fromPlain(x, netConfig_.nIn), fromPlain(y, netConfig_.nOut));
+}
+
+
+double graphNetTrainer::loss(const torch::Tensor& xIn, const torch::Tensor& yIn)
+{
+    const torch::Tensor x = checked(xIn, netConfig_.nIn);
+    const torch::Tensor y = checked(yIn, netConfig_.nOut);
+    torch::NoGradGuard noGrad;
+    net_->eval();
+    const torch::Tensor pred = net_->forward(inNorm_->forward(x));
+    return torch::mse_loss(pred, outNorm_->forward(y)).item<double>();
+}
+
+
+// * * * * * * * * * * * * * * * * * Inference * * * * * * * * * * * * * * * //
+
+torch::Tensor graphNetTrainer::predict(const torch::Tensor& xIn)
+{
+    const torch::Tensor x = checked(xIn, netConfig_.nIn);
+    torch::NoGradGuard noGrad;
+    net_->eval();
+    return outNorm_->inverse(net_->forward(inNorm_->forward(x)));
+}
+
+
+std::vector<double> graphNetTrainer::predict(const std::vector<double>& x)
+{
+    const torch::Tensor q =
+        predict(fromPlain(x, netConfig_.nIn)).to(torch::kFloat64).contiguous();
+    return std::vector<double>(q.data_ptr<double>(), q.data_ptr<double>() + q.numel());
+}
+
+
+// * * * * * * * * * * * * * * * * Checkpoints * * * * * * * * * * * * * * * //
+
+void graphNetTrainer::save(const std::string& file) const
+{
+    torch::serialize::OutputArchive root, net, in, out, opt;
+    net_->save(net);
+    inNorm_->save(in);
+    outNorm_->save(out);
+    optimizer_->save(opt);
+    root.write("net", net);
+    root.write("inputNormaliser", in);
+    root.write("outputNormaliser", out);
+    root.write("optimizer", opt);
+    root.write("step", torch::tensor(step_));
+    root.write("config", torch::tensor(netConfig_.codes()));
+    root.write("nNodes", torch::tensor(net_->nNodes()));
+    root.save_to(file);
+}
+
+
+void graphNetTrainer::load(const std::string& file)
+{
+    if (!std::ifstream(file).good())
+    {
+        throw std::runtime_error
+        (
+            "graphNetTrainer: cannot read the model file '" + file + "'"
+        );
+    }
+    torch::serialize::InputArchive root;
+    try
+    {
+        root.load_from(file);
+    }
+    catch (const c10::Error& e)
+    {
+        throw std::runtime_error
+        (
+            "graphNetTrainer: '" + file + "' is not a model checkpoint"
+        );
+    }
+
+    torch::Tensor codes, nNodes, step;
+    if
+    (
+        !root.try_read("config", codes)
+     || !root.try_read("nNodes", nNodes)
+     || !root.try_read("step", step)
+    )
+    {
+        throw std::runtime_error
+        (
+            "graphNetTrainer: '" + file + "' is not a model checkpoint"
+            " (no config, nNodes or step)"
+        );
+    }
+    const std::vector<std::int64_t> mine = netConfig_.codes();
+    const std::vector<std::int64_t> theirs
+    (
+        codes.data_ptr<std::int64_t>(),
+        codes.data_ptr<std::int64_t>() + codes.numel()
+    );
+    if (theirs != mine)
+    {
+        graphNetConfig c;
+        if (theirs.size() == 7)
+        {
+            c.type = theirs[0] == 1 ? "bsms" : theirs[0] == 2 ? "mgn" : "?";
+            c.nIn = int(theirs[1]); c.nOut = int(theirs[2]);
+            c.latent = int(theirs[3]); c.hidden = int(theirs[4]);
+            c.nMessagePasses = int(theirs[5]); c.nLevels = int(theirs[6]);
+        }
+        throw std::runtime_error
+        (
+            "graphNetTrainer: the model in '" + file + "' (" + c.str()
+          + ") does not match this one (" + netConfig_.str() + ")"
+        );
+    }
+    if (nNodes.item<std::int64_t>() != net_->nNodes())
+    {
+        throw std::runtime_error
+        (
+            "graphNetTrainer: the model in '" + file + "' was trained on "
+          + std::to_string(nNodes.item<std::int64_t>()) + " nodes, this graph"
+            " has " + std::to_string(net_->nNodes())
+        );
+    }
+
+    torch::serialize::InputArchive net, in, out, opt;
+    root.read("net", net);
+    root.read("inputNormaliser", in);
+    root.read("outputNormaliser", out);
+    root.read("optimizer", opt);
+    net_->load(net);
+    inNorm_->load(in);
+    outNorm_->load(out);
+    optimizer_->load(opt);
+    step_ = step.item<std::int64_t>();
+}
+
+} // End namespace gnnTorch
+
+// ************************************************************************* //
