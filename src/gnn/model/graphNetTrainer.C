@@ -219,6 +219,7 @@ void graphNetTrainer::save(const std::string& file) const
     root.write("step", torch::tensor(step_));
     root.write("config", torch::tensor(netConfig_.codes()));
     root.write("nNodes", torch::tensor(net_->nNodes()));
+    root.write("seed", torch::tensor(std::int64_t(config_.seed)));
     root.save_to(file);
 }
 
@@ -301,6 +302,11 @@ void graphNetTrainer::load(const std::string& file)
     outNorm_->load(out);
     optimizer_->load(opt);
     step_ = step.item<std::int64_t>();
+    torch::Tensor seed;
+    if (root.try_read("seed", seed))
+    {
+        config_.seed = std::uint64_t(seed.item<std::int64_t>());
+    }
 }
 
 } // End namespace gnnTorch

@@ -1,0 +1,331 @@
+// Unit tests of the libtorch side of BSMS-GNN (libmpmFoamGNNModel):
+// tensors of levels and transitions consistent with the exported tables,
+// output shapes of BSMS-GNN and the MeshGraphNets baseline, a tiny training
+// run on a synthetic graph problem (one explicit step of advection-diffusion
+// on a 2D grid graph) lowering the one-step loss by at least 10x for both,
+// determinism for a seed, checkpoints reproducing predictions bit for bit and
+// resuming training exactly, clear errors for bad checkpoints, and the
+// parameter counts and forward-pass times of both models (printed).
+
+#include "gridHierarchies.H"
+#include "bsmsModel.H"
+#include "mgnModel.H"
+#include "graphNetTrainer.H"
+
+#include <gtest/gtest.h>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+
+using namespace gnnTorch;
+
+namespace
+{
+
+// One explicit step of du/dt = D lap(u) - c du/dx on the grid graph
+// (unit spacing, first-order upwind, c > 0): du_i = D sum_j (u_j - u_i)
+// - c (u_i - u_left(i)), with no contribution from missing neighbours.
+// Random inputs u [B, N, 1]; targets du [B, N, 1].
+struct advectionDiffusion
+{
+    int nx, ny;
+    double D = 0.1, c = 0.3;
+
+    torch::Tensor step(const torch::Tensor& u) const
+    {
+        const torch::Tensor g = u.reshape({u.size(0), ny, nx});
+        torch::Tensor du = torch::zeros_like(g);
+        using torch::indexing::Slice;
+        // x neighbours
+        torch::Tensor dxp = g.index({Slice(), Slice(), Slice(1, None)})
+            - g.index({Slice(), Slice(), Slice(0, -1)});
+        du.index({Slice(), Slice(), Slice(0, -1)}) += D*dxp;
+        du.index({Slice(), Slice(), Slice(1, None)}) -= D*dxp;
+        // y neighbours
+        torch::Tensor dyp = g.index({Slice(), Slice(1, None), Slice()})
+            - g.index({Slice(), Slice(0, -1), Slice()});
+        du.index({Slice(), Slice(0, -1), Slice()}) += D*dyp;
+        du.index({Slice(), Slice(1, None), Slice()}) -= D*dyp;
+        // upwind advection in +x
+        du.index({Slice(), Slice(), Slice(1, None)}) -= c*dxp;
+        return du.reshape({u.size(0), nx*ny, 1});
+    }
+
+    static constexpr auto None = torch::indexing::None;
+
+    // A batch of random fields and their steps
+    std::pair<torch::Tensor, torch::Tensor> batch(int B) const
+    {
+        const torch::Tensor u = torch::randn({B, nx*ny, 1});
+        return {u, step(u)};
+    }
+};
+
+
+graphNetConfig smallConfig(const std::string& type)
+{
+    graphNetConfig c;
+    c.type = type;
+    c.nIn = 1;
+    c.nOut = 1;
+    c.latent = 32;
+    c.hidden = 32;
+    c.nMessagePasses = 4;
+    return c;
+}
+
+
+trainerConfig smallTraining(std::uint64_t seed = 1)
+{
+    trainerConfig t;
+    t.lr = 3e-3;
+    t.lrMin = 1e-5;
+    t.lrDecay = 0.1;
+    t.decaySteps = 400;
+    t.noiseStd = {0.0};
+    t.normAccumulations = 20;
+    t.seed = seed;
+    return t;
+}
+
+} // End anonymous namespace
+
+
+// Levels as tensors agree with the exported tables: edge counts, C summing
+// to one per receiver (down) and per sender (normalised up), constants kept
+// by down- and up-sampling, and output shapes of both models
+TEST(graphNetTorch, levelsAndTransitionsShapes)
+{
+    const bsmsData::hierarchy h = gridHierarchies::grid(16, 12, 8);
+    ASSERT_EQ(h.check(), "");
+    ASSERT_GE(h.levels.size(), 4u);
+
+    graphNetConfig c = smallConfig("bsms");
+    c.nOut = 3;
+    bsmsModel m(h, c);
+    ASSERT_EQ(m.nLevels(), int(h.levels.size()));
+    for (int l = 0; l < m.nLevels(); ++l)
+    {
+        const graphTensors& g = m.level(l);
+        EXPECT_EQ(g.nNodes, h.levels[l].nNodes);
+        EXPECT_EQ(g.receivers.numel(), h.levels[l].nDirectedEdges());
+        EXPECT_EQ(g.senders.numel(), h.levels[l].nDirectedEdges());
+        EXPECT_EQ(g.edgeAttr.sizes(), (std::vector<std::int64_t>{g.receivers.numel(), 3}));
+        // mean edge length scaled to one
+        EXPECT_NEAR(g.edgeAttr.select(1, 2).mean().item<double>(), 1.0, 1e-5);
+    }
+    for (int l = 0; l + 1 < m.nLevels(); ++l)
+    {
+        SCOPED_TRACE("transition " + std::to_string(l));
+        const transitionTensors& t = m.transition(l);
+        EXPECT_EQ(t.nFine, h.levels[l].nNodes);
+        EXPECT_EQ(t.nCoarse, h.levels[l + 1].nNodes);
+        const torch::Tensor colSum = torch::zeros({t.nCoarse, 1})
+            .index_add_(0, t.coarse, t.down);
+        const torch::Tensor rowSum = torch::zeros({t.nFine, 1})
+            .index_add_(0, t.fine, t.up);
+        EXPECT_LT((colSum - 1).abs().max().item<double>(), 1e-6);
+        EXPECT_LT((rowSum - 1).abs().max().item<double>(), 1e-6);
+
+        const torch::Tensor one = torch::full({2, t.nFine, 4}, 0.7);
+        const torch::Tensor down = t.downsample(one);
+        EXPECT_EQ(down.sizes(), (std::vector<std::int64_t>{2, t.nCoarse, 4}));
+        EXPECT_LT((down - 0.7).abs().max().item<double>(), 1e-6);
+        const torch::Tensor up = t.upsample(down);
+        EXPECT_EQ(up.sizes(), (std::vector<std::int64_t>{2, t.nFine, 4}));
+        EXPECT_LT((up - 0.7).abs().max().item<double>(), 1e-6);
+    }
+
+    const std::int64_t N = h.levels[0].nNodes;
+    EXPECT_EQ(m.forward(torch::randn({N, 1})).sizes(), (std::vector<std::int64_t>{N, 3}));
+    EXPECT_EQ(m.forward(torch::randn({5, N, 1})).sizes(), (std::vector<std::int64_t>{5, N, 3}));
+    mgnModel g(h, smallConfig("mgn"));
+    EXPECT_EQ(g.forward(torch::randn({5, N, 1})).sizes(), (std::vector<std::int64_t>{5, N, 1}));
+
+    // A limited number of levels, and a single level (encoder, one MP, decoder)
+    c.nLevels = 2;
+    EXPECT_EQ(bsmsModel(h, c).nLevels(), 2);
+    c.nLevels = 1;
+    EXPECT_EQ(bsmsModel(h, c).forward(torch::randn({N, 1})).size(1), 3);
+}
+
+
+// The tiny training run: one step of advection-diffusion on a 16 x 12 grid
+// graph, random fields as inputs; the one-step loss on held-out fields falls
+// by at least 10x for BSMS-GNN and for MeshGraphNets
+TEST(graphNetTorch, trainingLowersOneStepLoss)
+{
+    const bsmsData::hierarchy h = gridHierarchies::grid(16, 12, 8);
+    const advectionDiffusion problem{16, 12};
+    for (const std::string type : {"bsms", "mgn"})
+    {
+        SCOPED_TRACE(type);
+        graphNetTrainer T(h, smallConfig(type), smallTraining());
+        torch::manual_seed(7);
+        const auto validation = problem.batch(16);
+        // the normalisers need statistics before the first loss: one
+        // accumulation-only pass is the first training step itself, so
+        // measure the initial loss after it
+        T.trainStep(problem.batch(8).first, problem.step(problem.batch(8).first));
+        const double before = T.loss(validation.first, validation.second);
+        const auto t0 = std::chrono::steady_clock::now();
+        const int nSteps = 250;
+        for (int s = 0; s < nSteps; ++s)
+        {
+            const auto b = problem.batch(8);
+            T.trainStep(b.first, b.second);
+        }
+        const double ms = std::chrono::duration<double, std::milli>
+            (std::chrono::steady_clock::now() - t0).count()/nSteps;
+        const double after = T.loss(validation.first, validation.second);
+        std::printf
+        (
+            "    %s: one-step loss %.4g -> %.4g (x%.0f lower) in %d steps,"
+            " %.2f ms/step (batch 8, %lld nodes)\n",
+            type.c_str(), before, after, before/after, nSteps, ms,
+            static_cast<long long>(h.levels[0].nNodes)
+        );
+        EXPECT_LT(after, before/10);
+    }
+}
+
+
+// Same seed, same data: identical weights and predictions; a checkpoint
+// reloaded into a trainer built with another seed reproduces the
+// predictions bit for bit and continues training exactly
+TEST(graphNetTorch, checkpointBitForBit)
+{
+    const bsmsData::hierarchy h = gridHierarchies::grid(12, 10, 8);
+    const advectionDiffusion problem{12, 10};
+    for (const std::string type : {"bsms", "mgn"})
+    {
+        SCOPED_TRACE(type);
+        trainerConfig tc = smallTraining(3);
+        tc.noiseStd = {0.05};
+        graphNetTrainer A(h, smallConfig(type), tc);
+        graphNetTrainer A2(h, smallConfig(type), tc);
+        torch::manual_seed(11);
+        std::vector<std::pair<torch::Tensor, torch::Tensor>> data;
+        for (int s = 0; s < 12; ++s) data.push_back(problem.batch(4));
+        for (int s = 0; s < 10; ++s)
+        {
+            const double la = A.trainStep(data[s].first, data[s].second);
+            const double lb = A2.trainStep(data[s].first, data[s].second);
+            EXPECT_EQ(la, lb);
+        }
+        const torch::Tensor x = data[11].first;
+        EXPECT_TRUE(torch::equal(A.predict(x), A2.predict(x)));
+
+        const std::string file = "/tmp/mpmFoamTorchTest_" + type + ".pt";
+        A.save(file);
+        trainerConfig other = tc;
+        other.seed = 99;
+        graphNetTrainer B(h, smallConfig(type), other);
+        EXPECT_FALSE(torch::equal(A.predict(x), B.predict(x)));
+        B.load(file);
+        EXPECT_EQ(B.step(), 10);
+        EXPECT_TRUE(torch::equal(A.predict(x), B.predict(x)));
+        EXPECT_EQ(A.learningRate(), B.learningRate());
+
+        // Resumed training: same noise, same Adam state, same result
+        const double la = A.trainStep(data[10].first, data[10].second);
+        const double lb = B.trainStep(data[10].first, data[10].second);
+        EXPECT_EQ(la, lb);
+        EXPECT_TRUE(torch::equal(A.predict(x), B.predict(x)));
+
+        // Plain-array interface gives the same numbers
+        const torch::Tensor xd = x[0].to(torch::kFloat64).contiguous();
+        const std::vector<double> xv(xd.data_ptr<double>(), xd.data_ptr<double>() + xd.numel());
+        const std::vector<double> qv = A.predict(xv);
+        const torch::Tensor q = A.predict(x[0]).to(torch::kFloat64);
+        ASSERT_EQ(std::int64_t(qv.size()), q.numel());
+        EXPECT_EQ(qv[5], q.reshape({-1})[5].item<double>());
+        std::remove(file.c_str());
+    }
+}
+
+
+// Bad checkpoints and inputs stop with a message naming the problem
+TEST(graphNetTorch, badInputs)
+{
+    const bsmsData::hierarchy h = gridHierarchies::grid(12, 10, 8);
+    graphNetTrainer A(h, smallConfig("bsms"), smallTraining());
+    const auto message = [](const std::function<void()>& f)
+    {
+        try { f(); }
+        catch (const std::runtime_error& e) { return std::string(e.what()); }
+        return std::string("no error");
+    };
+    EXPECT_NE(message([&]{ A.load("/nonexistent/model.pt"); }).find("cannot read the model file"), std::string::npos);
+
+    const std::string file = "/tmp/mpmFoamTorchTest_bad.pt";
+    graphNetConfig other = smallConfig("bsms");
+    other.nOut = 2;
+    graphNetTrainer B(h, other, smallTraining());
+    B.save(file);
+    const std::string m = message([&]{ A.load(file); });
+    EXPECT_NE(m.find("does not match"), std::string::npos) << m;
+    EXPECT_NE(m.find("nOut 2"), std::string::npos) << m;
+
+    graphNetTrainer C(gridHierarchies::grid(8, 8, 8), smallConfig("bsms"), smallTraining());
+    C.save(file);
+    EXPECT_NE(message([&]{ A.load(file); }).find("trained on 64 nodes"), std::string::npos);
+    std::remove(file.c_str());
+
+    { std::ofstream os(file); os << "not a model"; }
+    EXPECT_NE(message([&]{ A.load(file); }).find("not a model checkpoint"), std::string::npos);
+    std::remove(file.c_str());
+
+    EXPECT_NE(message([&]{ A.predict(torch::zeros({7, 1})); }).find("120 nodes"), std::string::npos);
+    graphNetConfig bad = smallConfig("gcn");
+    EXPECT_NE(message([&]{ graphNetTrainer(h, bad, smallTraining()); }).find("unknown type 'gcn'"), std::string::npos);
+}
+
+
+// Sizes and speed of both models at the dissertation's sizes (latent and
+// hidden 128, MeshGraphNets with 15 passes) on a 64 x 64 grid graph:
+// printed for the record (not a pass/fail criterion on a shared machine)
+TEST(graphNetTorch, parametersAndForwardTime)
+{
+    const bsmsData::hierarchy h = gridHierarchies::grid(64, 64, 16);
+    const std::int64_t N = h.levels[0].nNodes;
+    const torch::Tensor x = torch::randn({1, N, 3});
+    std::int64_t nParam[2];
+    double ms[2];
+    int k = 0;
+    for (const std::string type : {"bsms", "mgn"})
+    {
+        graphNetConfig c;
+        c.type = type;
+        c.nIn = 3;
+        c.nOut = 3;
+        torch::manual_seed(0);
+        std::shared_ptr<graphNetwork> net = newGraphNetwork(h, c);
+        torch::NoGradGuard noGrad;
+        net->forward(x);
+        const int reps = 5;
+        const auto t0 = std::chrono::steady_clock::now();
+        for (int r = 0; r < reps; ++r) net->forward(x);
+        ms[k] = std::chrono::duration<double, std::milli>
+            (std::chrono::steady_clock::now() - t0).count()/reps;
+        nParam[k] = net->nParameters();
+        std::printf
+        (
+            "    %s: %lld parameters, forward %.1f ms (%lld nodes, %zu levels, %d threads)\n",
+            type.c_str(), static_cast<long long>(nParam[k]), ms[k],
+            static_cast<long long>(N), type == "bsms" ? h.levels.size() : 1,
+            torch::get_num_threads()
+        );
+        ++k;
+    }
+    RecordProperty("bsmsParameters", std::to_string(nParam[0]));
+    RecordProperty("mgnParameters", std::to_string(nParam[1]));
+    // BSMS: encoder, decoder, 2L - 1 message passes (edge + node MLP), so
+    // with ten levels about as many parameters as MGN's two encoders,
+    // decoder and 15 passes; BSMS's advantage is the work per pass on the
+    // coarse levels, not the parameter count
+    EXPECT_GT(nParam[0], 0);
+    EXPECT_GT(nParam[1], 0);
+    EXPECT_GT(ms[0], 0);
+}
