@@ -308,8 +308,6 @@ void Foam::gasDynamics::step(Time& runTime)
     nFallback_ += rep.fallbackCells;
     cgTotal_ += rep.cgIterations;
 
-    scalar acoustic = 0;
-    stepper_->acousticRate(U_, acoustic);
     Info<< "Step " << runTime.timeIndex() << "  Time = " << runTime.timeName()
         << "  dt = " << dt << "  maxSpeed = " << speed << " (" << limiter
         << ")";
