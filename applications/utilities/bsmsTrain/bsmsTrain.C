@@ -17,13 +17,15 @@ Description
     recorded case must be on this mesh.
 
     Training pairs: every two consecutive written times (the 0 directory
-    included) of every case.  A sample is node-major: for each cell the
+    included, times before startTime left out) of every case.  A sample is node-major: for each cell the
     components of the fields in the order given (volScalarField: one,
     volVectorField: three).  Each step draws `batch` pairs (with
     replacement, from a generator seeded by (seed, step), so that a
     resumed run draws what an uninterrupted one would) and takes one Adam
     step on the one-step L2 loss of the normalised outputs, with Gaussian
-    noise of standard deviation `noise` on the inputs (graphNetTrainer).
+    noise of standard deviation `noise` on the inputs (graphNetTrainer;
+    none on input components that are constant over all the data, such as
+    the empty direction's velocity component of a 2D case).
 
     Progress every printInterval steps:
         step 100/2000  loss 1.23e-03  lr 1.00e-04  ETA 12 s
@@ -37,7 +39,8 @@ Usage
 
     system/bsmsTrainDict:
     \verbatim
-        cases         (".");          // recorded cases, relative to this one
+        cases         ("." "../run2"); // recorded cases, relative to this one
+        startTime     0.1;            // first time used (default: all)
         inputFields   (U p);
         outputFields  (U p);
         model         bsms;           // bsms | mgn
@@ -306,6 +309,9 @@ int main(int argc, char *argv[])
     checkpoint.expand();
     if (!checkpoint.isAbsolute()) checkpoint = runTime.path()/checkpoint;
 
+    const scalar tStart =
+        getAsOrDefault<scalar>(dict, "startTime", -GREAT, "a time");
+
     dictionary levelsDict;
     levelsDict.add("seeding", word("closeCenter"));
     if (dict.found("levels", keyType::LITERAL))
@@ -361,7 +367,15 @@ int main(int argc, char *argv[])
         dir.expand();
         if (!dir.isAbsolute()) dir = runTime.path()/dir;
         dir.clean();
-        const instantList times(TimePaths::findTimes(dir));
+        // The written times (findTimes also lists "constant")
+        DynamicList<instant> times;
+        for (const instant& t : TimePaths::findTimes(dir))
+        {
+            if (t.name() != "constant" && t.value() >= tStart - SMALL)
+            {
+                times.append(t);
+            }
+        }
         if (times.size() < 2)
         {
             FatalIOErrorInFunction(dict)
@@ -398,6 +412,37 @@ int main(int argc, char *argv[])
 
     s.nIn = nIn;
     s.nOut = nOut;
+
+    // No noise on input components that are constant over the data (the
+    // empty direction's velocity in 2D, say): the normaliser scales them by
+    // its epsilon, so noise there would swamp every other input
+    if (!s.noiseStd.empty())
+    {
+        const double noise = s.noiseStd[0];
+        s.noiseStd.assign(nIn, noise);
+        label nConst = 0;
+        for (label c = 0; c < nIn; ++c)
+        {
+            const double v0 = inputs[0][c];
+            bool constant = true;
+            for (const auto& x : inputs)
+            {
+                for (label i = c; constant && i < label(x.size()); i += nIn)
+                {
+                    constant = x[i] == v0;
+                }
+                if (!constant) break;
+            }
+            if (constant)
+            {
+                s.noiseStd[c] = 0;
+                ++nConst;
+            }
+        }
+        Info<< "Input noise " << noise << " on " << nIn - nConst << " of "
+            << nIn << " components (none on those constant in the data)"
+            << nl;
+    }
 
     // The trainer, resumed from the checkpoint if there is one
     std::unique_ptr<gnnTorch::bsmsTrainerFacade> T;
