@@ -11,21 +11,41 @@ Group
 Description
     Trains a BSMS-GNN (or the MeshGraphNets baseline) to advance a case's
     fields by one written time: from the input fields at written time t_k
-    of a recorded case it predicts the output fields at t_{k+1}.  The graph
-    is the cell graph of the current case's mesh (nodes = cell centres,
-    edges = internal faces), pooled into levels as bsmsLevels does; every
-    recorded case must be on this mesh.
+    of a recorded case it predicts the output fields at t_{k+1} (their
+    increment by default; see bsmsModelSpec).  The graph is the cell graph
+    of the current case's mesh (nodes = cell centres, edges = internal
+    faces), pooled into levels as bsmsLevels does; every recorded case must
+    be on this mesh.  Node inputs: the input fields and one 0/1 column per
+    nodeTypes entry (cells on those patches).  The model's time step
+    deltaT is the (uniform) interval of the written times.
 
     Training pairs: every two consecutive written times (the 0 directory
-    included, times before startTime left out) of every case.  A sample is node-major: for each cell the
-    components of the fields in the order given (volScalarField: one,
-    volVectorField: three).  Each step draws `batch` pairs (with
-    replacement, from a generator seeded by (seed, step), so that a
-    resumed run draws what an uninterrupted one would) and takes one Adam
-    step on the one-step L2 loss of the normalised outputs, with Gaussian
-    noise of standard deviation `noise` on the inputs (graphNetTrainer;
-    none on input components that are constant over all the data, such as
-    the empty direction's velocity component of a 2D case).
+    included, times before startTime left out) of every case.  Each step
+    draws `batch` pairs (with replacement, from a generator seeded by
+    (seed, step), so that a resumed run draws what an uninterrupted one
+    would) and takes one Adam step on the one-step L2 loss of the
+    normalised outputs.  Gaussian noise of standard deviation `noise` is
+    added to the input fields (none on components constant over all the
+    data, such as the empty direction's velocity in 2D), and an increment
+    target is taken from the noisy input, so that the model learns to
+    correct its own rollout error (MeshGraphNets' noise injection).
+    Training stops at `steps` or after `maxTrainTime` seconds of training,
+    whichever comes first.
+
+    Validation (optional): rollouts from the first time (>= startTime) of
+    each validation case, every `interval` steps and at the end, with the
+    root mean square errors of the output fields (physical units, over all
+    cells and output components) as Table 4.5 of the dissertation uses
+    them:
+        RMSE-1   one-step error: each step predicted from the recorded state
+        RMSE-50  rollout error over the first 50 steps:
+                 sqrt(mean over steps 1..50 of the mean squared error)
+        RMSE-all the same over the whole trajectory.
+    Written to postProcessing/bsmsTrain/validation.dat (one line per
+    validation) and, for the last one, the rollout error per step to
+    postProcessing/bsmsTrain/rollout_<case>.dat.  The log reports the
+    training time per step, the inference time per model step and the
+    peak memory (resident set) of the process and of the training.
 
     Progress every printInterval steps:
         step 100/2000  loss 1.23e-03  lr 1.00e-04  ETA 12 s
@@ -42,7 +62,9 @@ Usage
         cases         ("." "../run2"); // recorded cases, relative to this one
         startTime     0.1;            // first time used (default: all)
         inputFields   (U p);
-        outputFields  (U p);
+        outputFields  (U p);          // among the inputFields
+        nodeTypes     (inlet outlet wall); // default: every patch but empty
+        predict       increment;      // increment | state
         model         bsms;           // bsms | mgn
         latent        128;
         hidden        128;
@@ -58,11 +80,15 @@ Usage
         normAccumulations 1000;
         seed          0;
         checkpoint    "constant/bsmsModel.pt";
+        maxTrainTime  1e30;           // wall-clock budget [s]
         checkpointInterval 1000;
         printInterval 100;
+        validation    { cases ("../held"); interval 1000; }
     \endverbatim
     Everything but inputFields and outputFields has the default shown
-    (checkpointInterval: steps; printInterval: steps/20).  Bad entries, a
+    (checkpointInterval: steps; printInterval: steps/20; no validation).
+    bsmsTrain writes the model dictionary (bsmsModelSpec) beside the
+    checkpoint: constant/bsmsModel.pt -> constant/bsmsModelDict.  Bad entries, a
     field missing from a case's time directory, a case with fewer than two
     written times and a checkpoint that does not match stop with a
     FatalIOError naming the file and the entry.  Serial only.
@@ -74,15 +100,17 @@ Usage
 #include "polyMesh.H"
 #include "IOdictionary.H"
 #include "IFstream.H"
+#include "OFstream.H"
 #include "OSspecific.H"
 #include "dictionaryChecks.H"
-#include "meshGraph.H"
-#include "bsmsPooling.H"
-#include "bsmsExport.H"
-#include "bsmsTrainerFacade.H"
+#include "bsmsModelSpec.H"
+#include "bsmsFieldIO.H"
+#include "bsmsSurrogateModel.H"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <random>
 #include <stdexcept>
 
@@ -93,106 +121,13 @@ using namespace Foam;
 namespace
 {
 
-//- One field file's internal field: components per cell and the values
-//  (cell-major)
-struct fieldValues
+//- A recorded case: its states at the written times (>= startTime)
+struct trajectory
 {
-    label nComp = 0;
-    std::vector<double> values;
+    fileName dir;
+    scalarList times;
+    std::vector<std::vector<double>> states;
 };
-
-
-fieldValues readFieldFile
-(
-    const fileName& file,
-    const label nCells,
-    const dictionary& trainDict,
-    const word& key
-)
-{
-    IFstream is(file);
-    if (!is.good())
-    {
-        FatalIOErrorInFunction(trainDict)
-            << "The field file " << file << " (entry '" << key << "' in "
-            << trainDict.name() << ") does not exist or cannot be read"
-            << exit(FatalIOError);
-    }
-    const dictionary d(is, true);
-    word cls;
-    if (d.found("FoamFile")) d.subDict("FoamFile").readIfPresent("class", cls);
-
-    fieldValues f;
-    if (cls == "volScalarField")
-    {
-        const scalarField v("internalField", d, nCells);
-        f.nComp = 1;
-        f.values.assign(v.begin(), v.end());
-    }
-    else if (cls == "volVectorField")
-    {
-        const vectorField v("internalField", d, nCells);
-        f.nComp = 3;
-        f.values.reserve(3*nCells);
-        for (const vector& x : v)
-        {
-            for (direction c = 0; c < 3; ++c) f.values.push_back(x[c]);
-        }
-    }
-    else
-    {
-        FatalIOErrorInFunction(trainDict)
-            << "The field file " << file << " (entry '" << key << "' in "
-            << trainDict.name() << ") is of class '" << cls
-            << "'; volScalarField or volVectorField expected"
-            << exit(FatalIOError);
-    }
-    return f;
-}
-
-
-//- The fields of one time directory as one node-major sample; nComp is
-//  set from the first call and checked on the others
-std::vector<double> readSample
-(
-    const fileName& timeDir,
-    const wordList& names,
-    const label nCells,
-    const dictionary& trainDict,
-    const word& key,
-    label& nComp
-)
-{
-    List<fieldValues> fs(names.size());
-    label n = 0;
-    forAll(names, i)
-    {
-        fs[i] = readFieldFile(timeDir/names[i], nCells, trainDict, key);
-        n += fs[i].nComp;
-    }
-    if (nComp == 0) nComp = n;
-    if (n != nComp)
-    {
-        FatalIOErrorInFunction(trainDict)
-            << "The fields " << names << " (entry '" << key << "') in "
-            << timeDir << " have " << n << " components, other times "
-            << nComp << exit(FatalIOError);
-    }
-    std::vector<double> s(std::size_t(nCells)*n);
-    label o = 0;
-    for (const fieldValues& f : fs)
-    {
-        for (label i = 0; i < nCells; ++i)
-        {
-            for (label c = 0; c < f.nComp; ++c)
-            {
-                s[std::size_t(i)*n + o + c] = f.values[i*f.nComp + c];
-            }
-        }
-        o += f.nComp;
-    }
-    return s;
-}
 
 
 wordList getWords(const dictionary& dict, const word& key)
@@ -210,12 +145,143 @@ wordList getWords(const dictionary& dict, const word& key)
 }
 
 
+fileNameList getCases(const dictionary& dict, const fileNameList& deflt)
+{
+    using namespace dictionaryChecks;
+    const fileNameList c
+    (
+        getAsOrDefault<fileNameList>
+        (
+            dict, "cases", deflt, "a list of case directories"
+        )
+    );
+    if (c.empty())
+    {
+        badEntry(dict, "cases", "()", "a non-empty list of case directories");
+    }
+    return c;
+}
+
+
+//- The states of a case's written times >= tStart (at least 2)
+trajectory readTrajectory
+(
+    const fileName& caseName,
+    const fileName& root,
+    const scalar tStart,
+    const bsmsModelSpec& spec,
+    labelList& comps,
+    const label nCells,
+    const dictionary& dict
+)
+{
+    trajectory tr;
+    tr.dir = caseName;
+    tr.dir.expand();
+    if (!tr.dir.isAbsolute()) tr.dir = root/tr.dir;
+    tr.dir.clean();
+    DynamicList<instant> times;
+    for (const instant& t : TimePaths::findTimes(tr.dir))
+    {
+        if (t.name() != "constant" && t.value() >= tStart - SMALL)
+        {
+            times.append(t);
+        }
+    }
+    if (times.size() < 2)
+    {
+        FatalIOErrorInFunction(dict)
+            << "The case " << tr.dir << " (entry 'cases' in " << dict.name()
+            << ") has " << times.size() << " written time(s) from t = "
+            << (tStart > -GREAT ? tStart : 0) << " on; at least 2 are"
+            << " needed for a training pair (no pairs: empty dataset)"
+            << exit(FatalIOError);
+    }
+    for (const instant& t : times)
+    {
+        tr.times.append(t.value());
+        tr.states.push_back
+        (
+            readFieldState
+            (
+                tr.dir/t.name(), spec.inputFields, nCells, comps, dict,
+                "inputFields"
+            )
+        );
+    }
+    return tr;
+}
+
+
 double secondsSince(const std::chrono::steady_clock::time_point& t0)
 {
     return std::chrono::duration<double>
     (
         std::chrono::steady_clock::now() - t0
     ).count();
+}
+
+
+//- A /proc/self/status entry in MB (VmRSS, VmHWM), 0 if unknown
+double procStatusMB(const std::string& key)
+{
+    std::ifstream is("/proc/self/status");
+    std::string k;
+    while (is >> k)
+    {
+        if (k == key + ":")
+        {
+            double kB = 0;
+            is >> kB;
+            return kB/1024.0;
+        }
+        std::string rest;
+        std::getline(is, rest);
+    }
+    return 0;
+}
+
+
+//- RMSE-1, RMSE-50, RMSE-all of the model on one trajectory and the
+//  squared error per rollout step; seconds per model step
+struct rolloutErrors
+{
+    double rmse1 = 0;
+    double rmse50 = 0;
+    double rmseAll = 0;
+    std::vector<double> mse;
+    double secondsPerStep = 0;
+};
+
+
+rolloutErrors validate(bsmsSurrogateModel& m, const trajectory& tr)
+{
+    rolloutErrors r;
+    const label n = tr.states.size() - 1;
+    double sum1 = 0;
+    for (label k = 0; k < n; ++k)
+    {
+        std::vector<double> s(tr.states[k]);
+        m.advance(s);
+        sum1 += m.outputMse(s, tr.states[k + 1]);
+    }
+    r.rmse1 = std::sqrt(sum1/n);
+
+    std::vector<double> s(tr.states[0]);
+    const auto t0 = std::chrono::steady_clock::now();
+    double sum = 0, sum50 = 0;
+    for (label k = 0; k < n; ++k)
+    {
+        m.advance(s);
+        const double e = m.outputMse(s, tr.states[k + 1]);
+        r.mse.push_back(e);
+        sum += e;
+        if (k < 50) sum50 += e;
+    }
+    r.secondsPerStep = secondsSince(t0)/n;
+    r.rmse50 = std::sqrt(sum50/min(n, label(50)));
+    r.rmseAll = std::sqrt(sum/n);
+    return r;
 }
 
 } // End anonymous namespace
@@ -249,51 +315,81 @@ int main(int argc, char *argv[])
     #include "setSystemMeshDictionaryIO.H"
     const IOdictionary dict(dictIO);
 
-    // Settings
-    const fileNameList caseNames
+    // The model
+    bsmsModelSpec spec;
+    spec.model = getAsOrDefault<word>(dict, "model", "bsms", "one of 2(bsms mgn)");
+    if (spec.model != "bsms" && spec.model != "mgn")
+    {
+        badEntry(dict, "model", spec.model, "one of 2(bsms mgn)");
+    }
+    spec.latent = getLabelAtLeast(dict, "latent", 128, 1);
+    spec.hidden = getLabelAtLeast(dict, "hidden", 128, 1);
+    spec.messagePasses = getLabelAtLeast(dict, "messagePasses", 15, 1);
+    spec.levels.add("seeding", word("closeCenter"));
+    if (dict.found("levels", keyType::LITERAL))
+    {
+        if (!dict.isDict("levels"))
+        {
+            badEntry
+            (
+                dict, "levels", entryText(dict, "levels"),
+                "a sub-dictionary of bsmsLevels settings"
+            );
+        }
+        spec.levels = dict.subDict("levels");
+    }
+    spec.inputFields = getWords(dict, "inputFields");
+    spec.outputFields = getWords(dict, "outputFields");
+    spec.nodeTypes = getAsOrDefault<List<wordRe>>
     (
-        getAsOrDefault<fileNameList>
+        dict, "nodeTypes", defaultNodeTypes(mesh),
+        "a list of patch names or regular expressions"
+    );
+    for (const wordRe& t : spec.nodeTypes)
+    {
+        bool found = false;
+        for (const polyPatch& pp : mesh.boundaryMesh())
+        {
+            found = found || t.match(pp.name());
+        }
+        if (!found)
+        {
+            OStringStream os;
+            os << "patch names or regular expressions matching patches of "
+               << mesh.boundaryMesh().names();
+            badEntry(dict, "nodeTypes", t, os.str());
+        }
+    }
+    {
+        const word p
         (
-            dict, "cases", fileNameList(1, fileName(".")),
-            "a list of case directories"
-        )
-    );
-    if (caseNames.empty())
-    {
-        badEntry(dict, "cases", "()", "a non-empty list of case directories");
-    }
-    const wordList inNames(getWords(dict, "inputFields"));
-    const wordList outNames(getWords(dict, "outputFields"));
-
-    const word model
-    (
-        getAsOrDefault<word>(dict, "model", "bsms", "one of 2(bsms mgn)")
-    );
-    if (model != "bsms" && model != "mgn")
-    {
-        badEntry(dict, "model", model, "one of 2(bsms mgn)");
+            getAsOrDefault<word>(dict, "predict", "increment", "increment or state")
+        );
+        if (p != "increment" && p != "state")
+        {
+            badEntry(dict, "predict", p, "increment or state");
+        }
+        spec.increment = (p == "increment");
     }
 
+    // Training settings
     gnnTorch::trainerSettings s;
-    s.model = model;
-    s.latent = getLabelAtLeast(dict, "latent", 128, 1);
-    s.hidden = getLabelAtLeast(dict, "hidden", 128, 1);
-    s.nMessagePasses = getLabelAtLeast(dict, "messagePasses", 15, 1);
     s.lr = getPositive(dict, "lr", 1e-4);
     s.lrMin = getPositive(dict, "lrMin", 1e-6);
     s.lrDecay = getPositive(dict, "lrDecay", 0.1);
     s.decaySteps = getPositive(dict, "decaySteps", 5e6);
+    const scalar noise =
+        getAsOrDefault<scalar>(dict, "noise", 0, "a number >= 0");
+    if (!(noise >= 0) || !std::isfinite(noise))
     {
-        const scalar noise =
-            getAsOrDefault<scalar>(dict, "noise", 0, "a number >= 0");
-        if (!(noise >= 0)) badEntry(dict, "noise", name(noise), "a number >= 0");
-        if (noise > 0) s.noiseStd.assign(1, noise);
+        badEntry(dict, "noise", name(noise), "a finite number >= 0");
     }
     s.normAccumulations = getLabelAtLeast(dict, "normAccumulations", 1000, 1);
     s.seed = getLabelAtLeast(dict, "seed", 0, 0);
 
     const label nSteps = getLabelAtLeast(dict, "steps", 2000, 1);
     const label batch = getLabelAtLeast(dict, "batch", 1, 1);
+    const scalar maxTrainTime = getPositive(dict, "maxTrainTime", 1e30);
     const label ckInterval =
         getLabelAtLeast(dict, "checkpointInterval", nSteps, 1);
     const label printInterval =
@@ -312,156 +408,130 @@ int main(int argc, char *argv[])
     const scalar tStart =
         getAsOrDefault<scalar>(dict, "startTime", -GREAT, "a time");
 
-    dictionary levelsDict;
-    levelsDict.add("seeding", word("closeCenter"));
-    if (dict.found("levels", keyType::LITERAL))
+    const fileNameList caseNames(getCases(dict, fileNameList(1, fileName("."))));
+
+    fileNameList validationCases;
+    label validationInterval = labelMax;
+    if (dict.found("validation", keyType::LITERAL))
     {
-        if (!dict.isDict("levels"))
+        if (!dict.isDict("validation"))
         {
             badEntry
             (
-                dict, "levels", entryText(dict, "levels"),
-                "a sub-dictionary of bsmsLevels settings"
+                dict, "validation", entryText(dict, "validation"),
+                "a sub-dictionary { cases (...); interval N; }"
             );
         }
-        levelsDict = dict.subDict("levels");
+        const dictionary& vd = dict.subDict("validation");
+        validationCases = getCases(vd, fileNameList());
+        validationInterval = getLabelAtLeast(vd, "interval", labelMax, 1);
     }
 
-    // The graph (cells of this case's mesh) and its levels
+    // The recorded cases
     const label nCells = mesh.nCells();
-    const int dim = mesh.geometricD()[2] < 0 ? 2 : 3;
-    const auto t0 = std::chrono::steady_clock::now();
-    const meshGraph fine(mesh, meshGraph::nodeType::cells);
-    bsmsData::hierarchy h;
-    if (model == "bsms")
-    {
-        bsmsPooling P(levelsDict);
-        P.build(fine);
-        h = bsmsExport(P, dim);
-    }
-    else
-    {
-        h = bsmsExport(fine, dim);
-    }
-    {
-        const std::string err = h.check();
-        if (!err.empty())
-        {
-            FatalErrorInFunction
-                << "Inconsistent graph hierarchy: " << err.c_str()
-                << exit(FatalError);
-        }
-    }
-    Info<< "Graph: " << nCells << " cells, " << h.levels.size()
-        << " levels (nodes";
-    for (const auto& l : h.levels) Info<< ' ' << label(l.nNodes);
-    Info<< "), dim " << dim << ", "
-        << secondsSince(t0) << " s" << nl << endl;
-
-    // The training pairs
-    label nIn = 0, nOut = 0;
-    std::vector<std::vector<double>> inputs, targets;
+    labelList comps;
+    std::vector<trajectory> train, valid;
     for (const fileName& cn : caseNames)
     {
-        fileName dir(cn);
-        dir.expand();
-        if (!dir.isAbsolute()) dir = runTime.path()/dir;
-        dir.clean();
-        // The written times (findTimes also lists "constant")
-        DynamicList<instant> times;
-        for (const instant& t : TimePaths::findTimes(dir))
-        {
-            if (t.name() != "constant" && t.value() >= tStart - SMALL)
-            {
-                times.append(t);
-            }
-        }
-        if (times.size() < 2)
-        {
-            FatalIOErrorInFunction(dict)
-                << "The case " << dir << " (entry 'cases' in "
-                << dict.name() << ") has " << times.size()
-                << " written time(s); at least 2 are needed for a"
-                << " training pair (no pairs)" << exit(FatalIOError);
-        }
-        for (label k = 0; k + 1 < times.size(); ++k)
-        {
-            inputs.push_back
-            (
-                readSample
-                (
-                    dir/times[k].name(), inNames, nCells, dict,
-                    "inputFields", nIn
-                )
-            );
-            targets.push_back
-            (
-                readSample
-                (
-                    dir/times[k + 1].name(), outNames, nCells, dict,
-                    "outputFields", nOut
-                )
-            );
-        }
-        Info<< "Case " << dir << ": " << times.size() << " times, "
-            << times.size() - 1 << " pairs" << nl;
+        train.push_back
+        (
+            readTrajectory(cn, runTime.path(), tStart, spec, comps, nCells, dict)
+        );
+        Info<< "Case " << train.back().dir << ": "
+            << train.back().times.size() << " times, "
+            << train.back().times.size() - 1 << " pairs" << nl;
     }
-    const label nPairs = inputs.size();
-    Info<< nPairs << " training pairs, " << nIn << " input and " << nOut
-        << " output components per node" << nl << endl;
-
-    s.nIn = nIn;
-    s.nOut = nOut;
-
-    // No noise on input components that are constant over the data (the
-    // empty direction's velocity in 2D, say): the normaliser scales them by
-    // its epsilon, so noise there would swamp every other input
-    if (!s.noiseStd.empty())
+    for (const fileName& cn : validationCases)
     {
-        const double noise = s.noiseStd[0];
-        s.noiseStd.assign(nIn, noise);
-        label nConst = 0;
-        for (label c = 0; c < nIn; ++c)
+        valid.push_back
+        (
+            readTrajectory(cn, runTime.path(), tStart, spec, comps, nCells, dict)
+        );
+        Info<< "Validation case " << valid.back().dir << ": "
+            << valid.back().times.size() - 1 << " rollout steps" << nl;
+    }
+    spec.inputComponents = comps;
+    spec.check(dict);
+
+    // The model time step: the interval of the written times (uniform)
+    spec.deltaT = train[0].times[1] - train[0].times[0];
+    for (const trajectory& tr : train)
+    {
+        for (label k = 0; k + 1 < tr.times.size(); ++k)
         {
-            const double v0 = inputs[0][c];
-            bool constant = true;
-            for (const auto& x : inputs)
+            const scalar dt = tr.times[k + 1] - tr.times[k];
+            if (mag(dt - spec.deltaT) > 1e-4*spec.deltaT)
             {
-                for (label i = c; constant && i < label(x.size()); i += nIn)
-                {
-                    constant = x[i] == v0;
-                }
-                if (!constant) break;
-            }
-            if (constant)
-            {
-                s.noiseStd[c] = 0;
-                ++nConst;
+                FatalIOErrorInFunction(dict)
+                    << "The written times of " << tr.dir << " (entry 'cases'"
+                    << " in " << dict.name() << ") are not uniform: "
+                    << tr.times[k] << " to " << tr.times[k + 1]
+                    << " is not the model time step " << spec.deltaT
+                    << " of the first interval" << exit(FatalIOError);
             }
         }
-        Info<< "Input noise " << noise << " on " << nIn - nConst << " of "
-            << nIn << " components (none on those constant in the data)"
+    }
+
+    std::vector<std::pair<label, label>> pairs;
+    for (label c = 0; c < label(train.size()); ++c)
+    {
+        for (label k = 0; k + 1 < train[c].times.size(); ++k)
+        {
+            pairs.push_back({c, k});
+        }
+    }
+    const label nPairs = pairs.size();
+    const label nState = spec.nState();
+    Info<< nPairs << " training pairs; per node " << nState
+        << " input field components " << spec.inputFields << ", "
+        << spec.nTypes() << " node types " << spec.nodeTypes << ", "
+        << spec.nOut() << " outputs " << spec.outputFields << " ("
+        << (spec.increment ? "increment" : "state") << " over deltaT "
+        << spec.deltaT << ")" << nl << endl;
+
+    // Noise on the state components that vary in the data
+    std::vector<double> noiseStd(nState, 0.0);
+    if (noise > 0)
+    {
+        label nVar = 0;
+        for (label c = 0; c < nState; ++c)
+        {
+            const double v0 = train[0].states[0][c];
+            bool constant = true;
+            for (const trajectory& tr : train)
+            {
+                for (const auto& x : tr.states)
+                {
+                    for (std::size_t i = c; constant && i < x.size(); i += nState)
+                    {
+                        constant = x[i] == v0;
+                    }
+                }
+            }
+            if (!constant)
+            {
+                noiseStd[c] = noise;
+                ++nVar;
+            }
+        }
+        Info<< "Input noise " << noise << " on " << nVar << " of " << nState
+            << " field components (none on those constant in the data)"
             << nl;
     }
 
-    // The trainer, resumed from the checkpoint if there is one
-    std::unique_ptr<gnnTorch::bsmsTrainerFacade> T;
-    try
-    {
-        T.reset(new gnnTorch::bsmsTrainerFacade(h, s));
-    }
-    catch (const std::exception& e)
-    {
-        FatalErrorInFunction
-            << "Cannot build the model: " << e.what() << exit(FatalError);
-    }
-    Info<< "Model " << T->describe().c_str() << ", "
-        << label(T->nParameters()) << " parameters" << nl;
+    // The model, resumed from the checkpoint if there is one
+    const double rssStart = procStatusMB("VmRSS");
+    bsmsSurrogateModel m(mesh, spec, s);
+    Info<< "Graph: " << nCells << " cells, " << m.graph().levels.size()
+        << " levels (nodes " << m.levelSizes().c_str() << "), "
+        << m.buildSeconds() << " s" << nl
+        << "Model " << m.net().describe().c_str() << ", "
+        << label(m.net().nParameters()) << " parameters" << nl;
     if (!args.found("fresh") && isFile(checkpoint))
     {
         try
         {
-            T->load(checkpoint);
+            m.net().load(checkpoint);
         }
         catch (const std::exception& e)
         {
@@ -472,7 +542,7 @@ int main(int argc, char *argv[])
                 << exit(FatalIOError);
         }
         Info<< "Resumed from " << checkpoint << " at step "
-            << label(T->step()) << nl;
+            << label(m.net().step()) << nl;
     }
     Info<< endl;
 
@@ -481,7 +551,7 @@ int main(int argc, char *argv[])
         mkDir(checkpoint.path());
         try
         {
-            T->save(checkpoint);
+            m.net().save(checkpoint);
         }
         catch (const std::exception& e)
         {
@@ -490,36 +560,110 @@ int main(int argc, char *argv[])
                 << " (entry 'checkpoint'): " << e.what()
                 << exit(FatalIOError);
         }
+        OFstream os(bsmsSpecFile(checkpoint));
+        os  << "// Model dictionary of " << checkpoint.name()
+            << ", written by bsmsTrain" << nl;
+        spec.write(os);
+    };
+
+    const fileName outDir(runTime.path()/"postProcessing"/"bsmsTrain");
+    mkDir(outDir);
+    autoPtr<OFstream> validationFile;
+    auto runValidation = [&](const label step, const bool last)
+    {
+        if (valid.empty()) return;
+        if (!validationFile.valid())
+        {
+            validationFile.reset(new OFstream(outDir/"validation.dat"));
+            validationFile()
+                << "# step case RMSE-1 RMSE-50 RMSE-all inferenceSecondsPerStep"
+                << nl;
+        }
+        char buf[300];
+        for (const trajectory& tr : valid)
+        {
+            const rolloutErrors r = validate(m, tr);
+            std::snprintf
+            (
+                buf, sizeof(buf),
+                "Validation %s at step %d: RMSE-1 %.4e  RMSE-50 %.4e"
+                "  RMSE-all %.4e  (%d steps, %.2f ms per model step)",
+                tr.dir.name().c_str(), int(step), r.rmse1, r.rmse50,
+                r.rmseAll, int(r.mse.size()), 1e3*r.secondsPerStep
+            );
+            Info<< buf << endl;
+            std::snprintf
+            (
+                buf, sizeof(buf), "%d %s %.6e %.6e %.6e %.6e", int(step),
+                tr.dir.name().c_str(), r.rmse1, r.rmse50, r.rmseAll,
+                r.secondsPerStep
+            );
+            validationFile() << buf << endl;
+            if (last)
+            {
+                OFstream os(outDir/("rollout_" + tr.dir.name() + ".dat"));
+                os  << "# rollout of the model at training step " << step
+                    << " from t = " << tr.times[0] << " (deltaT "
+                    << spec.deltaT << ")" << nl
+                    << "# step time RMSE(step) RMSE(steps 1..step)" << nl;
+                double sum = 0;
+                for (std::size_t k = 0; k < r.mse.size(); ++k)
+                {
+                    sum += r.mse[k];
+                    std::snprintf
+                    (
+                        buf, sizeof(buf), "%d %.6g %.6e %.6e", int(k + 1),
+                        tr.times[k + 1], std::sqrt(r.mse[k]),
+                        std::sqrt(sum/(k + 1))
+                    );
+                    os << buf << nl;
+                }
+            }
+        }
     };
 
     // Training
-    const label start = T->step();
+    const label start = m.net().step();
     if (start >= nSteps)
     {
         Info<< "The checkpoint is at step " << start << " >= steps "
             << nSteps << ": nothing to train" << nl;
     }
+    const double rssTrain = procStatusMB("VmRSS");
     const auto tTrain = std::chrono::steady_clock::now();
+    double validationSeconds = 0;
     double lossSum = 0;
     label lossCount = 0;
-    char buf[200];
-    std::vector<double> x, y;
-    for (label step = start; step < nSteps; ++step)
+    char buf[300];
+    std::vector<double> x, y, noisy;
+    label step = start;
+    while (step < nSteps)
     {
         std::mt19937_64 rng(s.seed*0x9E3779B97F4A7C15ULL + std::uint64_t(step));
         std::uniform_int_distribution<label> pick(0, nPairs - 1);
+        std::normal_distribution<double> gauss(0.0, 1.0);
         x.clear();
         y.clear();
         for (label b = 0; b < batch; ++b)
         {
-            const label k = pick(rng);
-            x.insert(x.end(), inputs[k].begin(), inputs[k].end());
-            y.insert(y.end(), targets[k].begin(), targets[k].end());
+            const auto& pr = pairs[pick(rng)];
+            const trajectory& tr = train[pr.first];
+            noisy = tr.states[pr.second];
+            if (noise > 0)
+            {
+                for (std::size_t i = 0; i < noisy.size(); ++i)
+                {
+                    const double sd = noiseStd[i % nState];
+                    if (sd > 0) noisy[i] += sd*gauss(rng);
+                }
+            }
+            m.appendInput(noisy, x);
+            m.appendTarget(noisy, tr.states[pr.second + 1], y);
         }
         double l = 0;
         try
         {
-            l = T->trainStep(x, y);
+            l = m.net().trainStep(x, y);
         }
         catch (const std::exception& e)
         {
@@ -527,48 +671,90 @@ int main(int argc, char *argv[])
                 << "Training step " << step + 1 << ": " << e.what()
                 << exit(FatalError);
         }
+        if (!std::isfinite(l))
+        {
+            FatalErrorInFunction
+                << "Training step " << step + 1 << ": the loss is " << l
+                << "; the last checkpoint is kept (lower lr?)"
+                << exit(FatalError);
+        }
         lossSum += l;
         ++lossCount;
+        ++step;
 
-        const label done = step + 1;
-        if (done % printInterval == 0 || done == nSteps)
+        const double el = secondsSince(tTrain) - validationSeconds;
+        const bool outOfTime = el >= maxTrainTime;
+        const bool last = step == nSteps || outOfTime;
+        if (step % printInterval == 0 || last)
         {
-            const double el = secondsSince(tTrain);
-            const double eta = el/(done - start)*(nSteps - done);
+            const double eta =
+                min(el/(step - start)*(nSteps - step), maxTrainTime - el);
             std::snprintf
             (
                 buf, sizeof(buf), "step %d/%d  loss %.3e  lr %.3e  ETA %.0f s",
-                int(done), int(nSteps), lossSum/lossCount,
-                T->learningRate(), eta
+                int(step), int(nSteps), lossSum/lossCount,
+                m.net().learningRate(), max(eta, 0.0)
             );
             Info<< buf << endl;
             lossSum = 0;
             lossCount = 0;
         }
-        if (done % ckInterval == 0 || done == nSteps)
+        if (step % ckInterval == 0 || last)
         {
             save();
             Info<< "Wrote the checkpoint " << checkpoint << " at step "
-                << done << endl;
+                << step << endl;
+        }
+        if (step % validationInterval == 0 || last)
+        {
+            const auto tv = std::chrono::steady_clock::now();
+            runValidation(step, last);
+            validationSeconds += secondsSince(tv);
+        }
+        if (outOfTime)
+        {
+            Info<< "The training budget maxTrainTime " << maxTrainTime
+                << " s is spent at step " << step << endl;
+            break;
         }
     }
-    if (nSteps > start)
+    const double peak = procStatusMB("VmHWM");
+    if (step > start)
     {
+        const double el = secondsSince(tTrain) - validationSeconds;
         std::snprintf
         (
-            buf, sizeof(buf), "%d steps in %.2f s (%.4f s per step)",
-            int(nSteps - start), secondsSince(tTrain),
-            secondsSince(tTrain)/(nSteps - start)
+            buf, sizeof(buf),
+            "Training: %d steps in %.2f s (%.4f s per step; validation"
+            " %.1f s not counted)",
+            int(step - start), el, el/(step - start), validationSeconds
         );
         Info<< nl << buf << nl;
+        std::snprintf
+        (
+            buf, sizeof(buf),
+            "Memory: peak resident %.1f MB; %.1f MB before the model,"
+            " %.1f MB before training; training peak %.1f MB above that",
+            peak, rssStart, rssTrain, peak - rssTrain
+        );
+        Info<< buf << nl;
+    }
+    else if (!valid.empty())
+    {
+        runValidation(step, true);
     }
 
     // The loss on every pair without noise
     {
         double sum = 0;
-        for (label k = 0; k < nPairs; ++k)
+        for (const auto& pr : pairs)
         {
-            sum += T->loss(inputs[k], targets[k]);
+            const trajectory& tr = train[pr.first];
+            x.clear();
+            y.clear();
+            m.appendInput(tr.states[pr.second], x);
+            m.appendTarget(tr.states[pr.second], tr.states[pr.second + 1], y);
+            sum += m.net().loss(x, y);
         }
         std::snprintf(buf, sizeof(buf), "%.6e", sum/nPairs);
         Info<< "Final one-step loss over " << nPairs << " pairs (no noise): "

@@ -1,0 +1,179 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+-------------------------------------------------------------------------------
+Application
+    bsmsFoam
+
+Group
+    mpmFoam solvers
+
+Description
+    Advances a case with a trained BSMS-GNN (or MeshGraphNets) model alone,
+    no flow solver: from the start time's fields, every model step (the
+    model's deltaT, which replaces the controlDict's) predicts the output
+    fields, and the written times are ordinary time directories
+    (foamToVTK, ParaView).  Input fields that are not outputs keep their
+    start values; boundary values follow the fields' boundary conditions.
+
+    The log shows each model step's time and wall-clock cost, and at the
+    end the mean cost per model step and per unit of simulated time (to
+    compare with the solver the model replaces).  A non-finite prediction
+    writes the last good state and stops with a message.
+
+Usage
+    bsmsFoam [-case dir] [-model file]
+
+    The model (default constant/bsmsModel.pt, with its model dictionary
+    constant/bsmsModelDict beside it, both written by bsmsTrain) can also be
+    named in system/controlDict:
+    \verbatim
+        bsmsModel   "constant/bsmsModel.pt";
+    \endverbatim
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "OSspecific.H"
+#include "bsmsSurrogateModel.H"
+#include "bsmsFieldIO.H"
+
+#include <chrono>
+#include <cstdio>
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Advance a case with a trained BSMS-GNN model alone (no solver)"
+    );
+    argList::noParallel();
+    argList::addOption
+    (
+        "model",
+        "file",
+        "the checkpoint (default: bsmsModel in system/controlDict, else"
+        " constant/bsmsModel.pt)"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    const dictionary& controlDict = runTime.controlDict();
+    fileName modelFile("constant/bsmsModel.pt");
+    controlDict.readIfPresent("bsmsModel", modelFile);
+    args.readIfPresent("model", modelFile);
+    modelFile.expand();
+    if (!modelFile.isAbsolute()) modelFile = runTime.path()/modelFile;
+
+    std::unique_ptr<bsmsSurrogateModel> model
+    (
+        bsmsSurrogateModel::load(mesh, modelFile, controlDict, "bsmsModel")
+    );
+    const bsmsModelSpec& spec = model->spec();
+    Info<< "Model " << modelFile << ": " << spec.model << ", levels (nodes "
+        << model->levelSizes().c_str() << "), inputs " << spec.inputFields
+        << ", outputs " << spec.outputFields << ", deltaT " << spec.deltaT
+        << nl << endl;
+
+    // The fields, read from the start time and written with the case
+    PtrList<volScalarField> scalars;
+    PtrList<volVectorField> vectors;
+    forAll(spec.inputFields, i)
+    {
+        const word& f = spec.inputFields[i];
+        IOobject io
+        (
+            f, runTime.timeName(), mesh,
+            IOobject::MUST_READ,
+            spec.outputFields.found(f)
+          ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+        );
+        if (!io.typeHeaderOk<volScalarField>(false))
+        {
+            FatalIOErrorInFunction(controlDict)
+                << "The model " << modelFile << " (entry 'bsmsModel') reads"
+                << " the field '" << f << "', which the case lacks at time "
+                << runTime.timeName() << " (" << io.objectPath() << ")"
+                << exit(FatalIOError);
+        }
+        if (spec.inputComponents[i] == 1)
+        {
+            scalars.append(new volScalarField(io, mesh));
+        }
+        else
+        {
+            vectors.append(new volVectorField(io, mesh));
+        }
+    }
+    std::vector<double> state
+    (
+        registryState(mesh, spec.inputFields, spec.inputComponents,
+            controlDict, "bsmsModel")
+    );
+
+    runTime.setDeltaT(spec.deltaT);
+    const auto t0 = std::chrono::steady_clock::now();
+    label nModelSteps = 0;
+    double modelSeconds = 0;
+    char buf[200];
+    while (runTime.run())
+    {
+        ++runTime;
+        const auto ts = std::chrono::steady_clock::now();
+        std::vector<double> next(state);
+        model->advance(next);
+        const double sec = std::chrono::duration<double>
+        (
+            std::chrono::steady_clock::now() - ts
+        ).count();
+        modelSeconds += sec;
+        ++nModelSteps;
+
+        if (!allFinite(next))
+        {
+            runTime.setTime(runTime.value() - spec.deltaT, runTime.timeIndex());
+            setFields(mesh, state, spec.inputFields, spec.inputComponents,
+                spec.outputFields);
+            runTime.writeNow();
+            FatalErrorInFunction
+                << "The model predicted non-finite values at t = "
+                << runTime.value() + spec.deltaT << "; the last good state"
+                << " (t = " << runTime.timeName() << ") is written"
+                << exit(FatalError);
+        }
+        state.swap(next);
+        setFields(mesh, state, spec.inputFields, spec.inputComponents,
+            spec.outputFields);
+
+        std::snprintf(buf, sizeof(buf), "model step %.1f ms", 1e3*sec);
+        Info<< "Time = " << runTime.timeName() << "  " << buf << nl;
+        runTime.write();
+    }
+
+    const double wall = std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - t0
+    ).count();
+    const scalar simulated = nModelSteps*spec.deltaT;
+    std::snprintf
+    (
+        buf, sizeof(buf),
+        "%d model steps in %.3f s (%.2f ms per step, model only %.2f ms);"
+        " %.4f s per unit of simulated time",
+        int(nModelSteps), wall, 1e3*wall/max(nModelSteps, label(1)),
+        1e3*modelSeconds/max(nModelSteps, label(1)),
+        wall/max(simulated, SMALL)
+    );
+    Info<< nl << buf << nl;
+    Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
+        << "  ClockTime = " << runTime.elapsedClockTime() << " s"
+        << nl << nl << "End" << nl << endl;
+    return 0;
+}
+
+
+// ************************************************************************* //
