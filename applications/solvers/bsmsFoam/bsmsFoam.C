@@ -14,7 +14,9 @@ Description
     model's deltaT, which replaces the controlDict's) predicts the output
     fields, and the written times are ordinary time directories
     (foamToVTK, ParaView).  Input fields that are not outputs keep their
-    start values; boundary values follow the fields' boundary conditions.
+    start values; boundary values follow the fields' boundary conditions
+    (with U among the outputs, the face flux phi = flux(U) is kept for
+    those that need it, such as inletOutlet, and written).
 
     The log shows each model step's time and wall-clock cost, and at the
     end the mean cost per model step and per unit of simulated time (to
@@ -100,6 +102,20 @@ int main(int argc, char *argv[])
                 << runTime.timeName() << " (" << io.objectPath() << ")"
                 << exit(FatalIOError);
         }
+        const word expected
+        (
+            spec.inputComponents[i] == 1 ? "volScalarField" : "volVectorField"
+        );
+        if (io.headerClassName() != expected)
+        {
+            FatalIOErrorInFunction(controlDict)
+                << "The model " << modelFile << " (entry 'bsmsModel') reads"
+                << " the field " << f << " with " << spec.inputComponents[i]
+                << " component(s) (" << expected << "), but the case's "
+                << io.objectPath() << " is a " << io.headerClassName()
+                << ": the model does not match the case's fields"
+                << exit(FatalIOError);
+        }
         if (spec.inputComponents[i] == 1)
         {
             scalars.append(new volScalarField(io, mesh));
@@ -109,6 +125,27 @@ int main(int argc, char *argv[])
             vectors.append(new volVectorField(io, mesh));
         }
     }
+
+    // The face flux of U for boundary conditions that need one
+    // (inletOutlet, ...): phi = flux of the predicted U, written with it
+    autoPtr<surfaceScalarField> phi;
+    if (spec.outputFields.found("U") && mesh.foundObject<volVectorField>("U"))
+    {
+        const volVectorField& U = mesh.lookupObject<volVectorField>("U");
+        phi.reset
+        (
+            new surfaceScalarField
+            (
+                IOobject
+                (
+                    "phi", runTime.timeName(), mesh,
+                    IOobject::NO_READ, IOobject::AUTO_WRITE
+                ),
+                fvc::flux(U)
+            )
+        );
+    }
+
     std::vector<double> state
     (
         registryState(mesh, spec.inputFields, spec.inputComponents,
@@ -148,6 +185,10 @@ int main(int argc, char *argv[])
         state.swap(next);
         setFields(mesh, state, spec.inputFields, spec.inputComponents,
             spec.outputFields);
+        if (phi.valid())
+        {
+            phi() = fvc::flux(mesh.lookupObject<volVectorField>("U"));
+        }
 
         std::snprintf(buf, sizeof(buf), "model step %.1f ms", 1e3*sec);
         Info<< "Time = " << runTime.timeName() << "  " << buf << nl;

@@ -40,7 +40,9 @@ Description
         RMSE-1   one-step error: each step predicted from the recorded state
         RMSE-50  rollout error over the first 50 steps:
                  sqrt(mean over steps 1..50 of the mean squared error)
-        RMSE-all the same over the whole trajectory.
+        RMSE-all the same over the whole trajectory
+    (components: not the empty direction's in 2D).  For reference the log
+    gives the RMSE-50 and RMSE-all of holding the start state.
     Written to postProcessing/bsmsTrain/validation.dat (one line per
     validation) and, for the last one, the rollout error per step to
     postProcessing/bsmsTrain/rollout_<case>.dat.  The log reports the
@@ -489,7 +491,10 @@ int main(int argc, char *argv[])
         << (spec.increment ? "increment" : "state") << " over deltaT "
         << spec.deltaT << ")" << nl << endl;
 
-    // Noise on the state components that vary in the data
+    // The model, resumed from the checkpoint if there is one
+    const double rssStart = procStatusMB("VmRSS");
+    bsmsSurrogateModel m(mesh, spec, s);
+    // Noise on the state components that vary in the data (and are used)
     std::vector<double> noiseStd(nState, 0.0);
     if (noise > 0)
     {
@@ -497,14 +502,18 @@ int main(int argc, char *argv[])
         for (label c = 0; c < nState; ++c)
         {
             const double v0 = train[0].states[0][c];
+            // Unused components count as constant
             bool constant = true;
-            for (const trajectory& tr : train)
+            if (m.used(c))
             {
-                for (const auto& x : tr.states)
+                for (const trajectory& tr : train)
                 {
-                    for (std::size_t i = c; constant && i < x.size(); i += nState)
+                    for (const auto& x : tr.states)
                     {
-                        constant = x[i] == v0;
+                        for (std::size_t i = c; constant && i < x.size(); i += nState)
+                        {
+                            constant = x[i] == v0;
+                        }
                     }
                 }
             }
@@ -515,13 +524,9 @@ int main(int argc, char *argv[])
             }
         }
         Info<< "Input noise " << noise << " on " << nVar << " of " << nState
-            << " field components (none on those constant in the data)"
-            << nl;
+            << " field components (none on those constant in the data or"
+            << " in the empty direction)" << nl;
     }
-
-    // The model, resumed from the checkpoint if there is one
-    const double rssStart = procStatusMB("VmRSS");
-    bsmsSurrogateModel m(mesh, spec, s);
     Info<< "Graph: " << nCells << " cells, " << m.graph().levels.size()
         << " levels (nodes " << m.levelSizes().c_str() << "), "
         << m.buildSeconds() << " s" << nl
@@ -568,6 +573,29 @@ int main(int argc, char *argv[])
 
     const fileName outDir(runTime.path()/"postProcessing"/"bsmsTrain");
     mkDir(outDir);
+    // The reference a model must beat: the start state held (persistence)
+    for (const trajectory& tr : valid)
+    {
+        double sum = 0, sum50 = 0;
+        const label n = tr.states.size() - 1;
+        for (label k = 0; k < n; ++k)
+        {
+            const double e = m.outputMse(tr.states[0], tr.states[k + 1]);
+            sum += e;
+            if (k < 50) sum50 += e;
+        }
+        char buf[200];
+        std::snprintf
+        (
+            buf, sizeof(buf),
+            "Validation %s, the start state held: RMSE-50 %.4e  RMSE-all %.4e",
+            tr.dir.name().c_str(), std::sqrt(sum50/min(n, label(50))),
+            std::sqrt(sum/n)
+        );
+        Info<< buf << nl;
+    }
+    Info<< endl;
+
     autoPtr<OFstream> validationFile;
     auto runValidation = [&](const label step, const bool last)
     {

@@ -28,13 +28,37 @@ namespace functionObjects
 
 void Foam::functionObjects::bsmsSurrogate::start()
 {
+    if (Pstream::parRun())
+    {
+        FatalErrorInFunction
+            << type() << ' ' << name() << ": the model runs on the whole"
+            << " mesh's graph; run the case serially" << exit(FatalError);
+    }
     model_ = bsmsSurrogateModel::load(mesh_, modelFile_, dict_, "model");
     const bsmsModelSpec& spec = model_->spec();
-    state_ = registryState
-    (
-        mesh_, spec.inputFields, spec.inputComponents, dict_, "model"
-    );
-    modelTime_ = time_.value();
+
+    // From the run's start: function objects first execute after the first
+    // solver step, so the start state is read from the start time's files
+    // (which the solver read too); later: the solver's current fields
+    const scalar t0 = time_.startTime().value();
+    if (startTime_ <= t0 + 1e-9*max(mag(t0), scalar(1)))
+    {
+        labelList comps(spec.inputComponents);
+        state_ = readFieldState
+        (
+            time_.path()/time_.timeName(t0), spec.inputFields,
+            mesh_.nCells(), comps, dict_, "model"
+        );
+        modelTime_ = t0;
+    }
+    else
+    {
+        state_ = registryState
+        (
+            mesh_, spec.inputFields, spec.inputComponents, dict_, "model"
+        );
+        modelTime_ = time_.value();
+    }
     nModelSteps_ = 0;
     modelSeconds_ = 0;
 
@@ -74,7 +98,7 @@ void Foam::functionObjects::bsmsSurrogate::start()
     mkDir(dir);
     file_.reset(new OFstream(dir/"bsmsSurrogate.dat"));
     file_() << "# model " << modelFile_ << ", deltaT " << spec.deltaT
-        << ", from t = " << time_.timeName() << nl
+        << ", from t = " << modelTime_ << nl
         << "# time modelSteps";
     for (const word& f : spec.outputFields) file_() << " RMSE_" << f;
     file_() << " modelStepSeconds" << endl;
@@ -82,7 +106,7 @@ void Foam::functionObjects::bsmsSurrogate::start()
     Info<< type() << ' ' << name() << ": model " << modelFile_ << " ("
         << spec.model << ", levels " << model_->levelSizes().c_str()
         << "), deltaT " << spec.deltaT << ", rollout from t = "
-        << time_.timeName() << endl;
+        << modelTime_ << endl;
 }
 
 
@@ -106,16 +130,19 @@ Foam::List<Foam::scalar> Foam::functionObjects::bsmsSurrogate::rmse() const
         if (j >= 0)
         {
             double sum = 0;
-            for (label k = 0; k < mesh_.nCells(); ++k)
+            label nUsed = 0;
+            for (label c = 0; c < nc; ++c)
             {
-                for (label c = 0; c < nc; ++c)
+                if (!model_->used(o + c)) continue;
+                ++nUsed;
+                for (label k = 0; k < mesh_.nCells(); ++k)
                 {
                     const std::size_t q = std::size_t(k)*nS + o + c;
                     const double d = state_[q] - solver[q];
                     sum += d*d;
                 }
             }
-            r[j] = std::sqrt(sum/(double(mesh_.nCells())*nc));
+            r[j] = std::sqrt(sum/(double(mesh_.nCells())*max(nUsed, 1)));
         }
         o += nc;
     }

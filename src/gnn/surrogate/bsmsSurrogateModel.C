@@ -25,8 +25,24 @@ Foam::bsmsSurrogateModel::bsmsSurrogateModel
     mesh_(mesh),
     spec_(spec),
     types_(nodeTypeColumns(mesh, spec.nodeTypes)),
-    outInState_(spec.outputInState())
+    outInState_(spec.outputInState()),
+    used_(spec.nState(), 1.0)
 {
+    {
+        label o = 0;
+        for (const label nc : spec_.inputComponents)
+        {
+            if (nc == 3)
+            {
+                for (direction d = 0; d < 3; ++d)
+                {
+                    if (mesh.geometricD()[d] < 0) used_[o + d] = 0;
+                }
+            }
+            o += nc;
+        }
+    }
+
     const auto t0 = std::chrono::steady_clock::now();
     const int dim = mesh.nGeometricD() < 3 ? 2 : 3;
     const meshGraph fine(mesh, meshGraph::nodeType::cells);
@@ -157,7 +173,7 @@ void Foam::bsmsSurrogateModel::appendInput
     for (label k = 0; k < n; ++k)
     {
         const double* s = state.data() + std::size_t(k)*nS;
-        x.insert(x.end(), s, s + nS);
+        for (label c = 0; c < nS; ++c) x.push_back(used_[c]*s[c]);
         const double* t = types_.data() + std::size_t(k)*nT;
         x.insert(x.end(), t, t + nT);
     }
@@ -181,7 +197,8 @@ void Foam::bsmsSurrogateModel::appendTarget
         {
             y.push_back
             (
-                spec_.increment ? state1[o + c] - state0[o + c] : state1[o + c]
+                used_[c]
+              * (spec_.increment ? state1[o + c] - state0[o + c] : state1[o + c])
             );
         }
     }
@@ -201,8 +218,10 @@ void Foam::bsmsSurrogateModel::advance(std::vector<double>& state)
         const std::size_t o = std::size_t(k)*nS;
         for (label j = 0; j < nO; ++j)
         {
+            const label c = outInState_[j];
+            if (!used_[c]) continue;
             const double v = q[std::size_t(k)*nO + j];
-            double& s = state[o + outInState_[j]];
+            double& s = state[o + c];
             s = spec_.increment ? s + v : v;
         }
     }
@@ -217,17 +236,18 @@ double Foam::bsmsSurrogateModel::outputMse
 {
     const label nS = spec_.nState();
     const label n = nCells();
-    double sum = 0;
+    double sum = 0, nUsed = 0;
+    for (const label c : outInState_) nUsed += used_[c];
     for (label k = 0; k < n; ++k)
     {
         const std::size_t o = std::size_t(k)*nS;
         for (const label c : outInState_)
         {
-            const double d = a[o + c] - b[o + c];
+            const double d = used_[c]*(a[o + c] - b[o + c]);
             sum += d*d;
         }
     }
-    return sum/(double(n)*outInState_.size());
+    return sum/(double(n)*max(nUsed, 1.0));
 }
 
 // ************************************************************************* //
