@@ -25,9 +25,6 @@ const Enum<supportSize> supportSizeNames
     { supportSize::maxEdge, "maxEdge" },
 });
 
-// Invert the symmetric (n x n, n <= 4) moment matrix M in place by
-// Gauss-Jordan elimination with partial pivoting.  Returns the smallest
-// pivot relative to the largest diagonal entry (0: singular).
 // Closed-form inverse of the symmetric 3 x 3 moment matrix (2D); returns
 // |det| relative to the product of the diagonal (0: singular)
 scalar invertMoment3(const scalar M[4][4], scalar Minv[4][4])
@@ -49,6 +46,9 @@ scalar invertMoment3(const scalar M[4][4], scalar Minv[4][4])
 }
 
 
+// Invert the symmetric (n x n, n <= 4) moment matrix M by Gauss-Jordan
+// elimination with partial pivoting.  Returns the smallest pivot relative to
+// the largest diagonal entry (0: singular).
 scalar invertMoment(const label n, scalar M[4][4], scalar Minv[4][4])
 {
     scalar A[4][8];
@@ -114,8 +114,19 @@ Foam::mlsRingKernel::mlsRingKernel
         ) == supportSize::mean
       ? mesh.vertexSize() : mesh.vertexMaxEdge()
     ),
-    slot_(mesh.nVertices(), -1)
-{}
+    support2_(h_.size()),
+    rings_(mesh),
+    sampleVertex_(rings_.maxSize),
+    sampleD_(rings_.maxSize),
+    sampleDx_(mesh.dim()*rings_.maxSize)
+{
+    // bSpline(r) = 0 for r >= 1.5: the slack keeps every vertex with
+    // |x_v - x_p|/h_v < 1.5 despite round-off in the squares
+    forAll(h_, v)
+    {
+        support2_[v] = sqr(1.5*h_[v])*(1 + 1e-10);
+    }
+}
 
 
 Foam::mlsRingKernel::mlsRingKernel
@@ -130,100 +141,135 @@ Foam::mlsRingKernel::mlsRingKernel
 
 // (2.22) MLS weights over the 1-ring; with diminish_, sample weights times
 // (2.29) eta_vp = sum_{n in N0} B_np A_vn
-void Foam::mlsRingKernel::compute
+template<int D>
+void Foam::mlsRingKernel::computeDim
 (
     const UList<vector>& x,
     const labelUList& cells,
     kernelWeights& out
 ) const
 {
-    out.clear();
-
-    const label dim = mesh_.dim();
-    const label n = dim + 1;
+    constexpr label n = D + 1;
     label ax[3] = {0, 0, 0};
-    for (label a = 0; a < dim; ++a) ax[a] = mesh_.axis(a);
+    for (label a = 0; a < D; ++a) ax[a] = mesh_.axis(a);
 
     const List<vector>& vx = mesh_.vertices();
     const scalarList& h = h_;
-    const labelList& cv = mesh_.cellVertices();
-    const labelList& nbr = mesh_.vertexNeighbours();
+    const scalarList& support2 = support2_;
+    const labelList& ringStart = rings_.start;
+    const labelList& ringVertex = rings_.vertex;
+    const List<unsigned char>& ringAdj = rings_.adjacent;
 
-    DynamicList<label>& ring = ring_;
-    DynamicList<scalar>& eta = eta_;
-    DynamicList<scalar>& d = d_;
-    DynamicList<vector>& dx = dx_;
+    // The rings bound the weights: room for all, written in place
+    const label nP = x.size();
+    label bound = 0;
+    for (label p = 0; p < nP; ++p) bound += rings_.size(cells[p]);
+    out.start.setSize(nP + 1);
+    out.vertex.setSize(bound);
+    out.w.setSize(bound);
+    out.gradW.setSize(bound);
+    label* __restrict__ vOut = out.vertex.data();
+    scalar* __restrict__ wOut = out.w.data();
+    vector* __restrict__ gOut = out.gradW.data();
+
+    // One particle's sample weights d_vp and offsets x_v - x_p
+    label* __restrict__ sv_ = sampleVertex_.data();
+    scalar* __restrict__ sd = sampleD_.data();
+    scalar* __restrict__ sx = sampleDx_.data();
+
     mpmMeshView::shapeValues sv;
-
-    forAll(x, p)
+    label k = 0;
+    out.start[0] = 0;
+    for (label p = 0; p < nP; ++p)
     {
         const label c = cells[p];
         const vector& xp = x[p];
         mesh_.shapeFunctions(c, xp, sv);
+        scalar xpa[D];
+        for (label a = 0; a < D; ++a) xpa[a] = xp[ax[a]];
 
-        ring.clear();
-        eta.clear();
-        auto add = [&](const label v, const scalar e)
+        // eta of a ring vertex: the B_n of the cell vertices its mask
+        // names, summed in cell-vertex order (subset sums when <= 4)
+        const label nv = sv.n;
+        scalar subset[16];
+        if (diminish_ && nv <= 4)
         {
-            label s = slot_[v];
-            if (s < 0)
+            subset[0] = 0;
+            for (label i = 0; i < nv; ++i)
             {
-                s = ring.size();
-                slot_[v] = s;
-                ring.append(v);
-                eta.append(0);
-            }
-            eta[s] += e;
-        };
-
-        // N0 with A_vv = 1, then the edge neighbours: eta accumulates B_n
-        // over the cell vertices n adjacent to (or equal to) v
-        const label b = mesh_.cellBegin(c);
-        for (label i = 0; i < sv.n; ++i)
-        {
-            add(cv[b + i], sv.B[i]);
-        }
-        for (label i = 0; i < sv.n; ++i)
-        {
-            const label v = cv[b + i];
-            for (label k = mesh_.vertexBegin(v); k < mesh_.vertexEnd(v); ++k)
-            {
-                add(nbr[k], sv.B[i]);
+                const label m0 = 1 << i;
+                for (label m = 0; m < m0; ++m) subset[m0 + m] = subset[m] + sv.B[i];
             }
         }
 
-        // Sample weights and the moment matrix M = sum d P P^T
+        const label rb = ringStart[c];
+        const label re = ringStart[c + 1];
         scalar M[4][4] = {{0}};
-        d.setSize(ring.size());
-        dx.setSize(ring.size());
-        forAll(ring, s)
+        label ns = 0;
+        for (label s = rb; s < re; ++s)
         {
-            const label v = ring[s];
-            slot_[v] = -1;
-            vector P(Zero);
-            for (label a = 0; a < dim; ++a) P[a] = vx[v][ax[a]] - xp[ax[a]];
-            dx[s] = P;
-            const scalar r = mag(P)/h[v];
-            const scalar e = diminish_ ? max(eta[s], scalar(0)) : scalar(1);
-            d[s] = e*bSpline(r);
-            if (d[s] == 0) continue;
-            const scalar ds = d[s];
+            const label v = ringVertex[s];
+            scalar P[D];
+            scalar r2 = 0;
+            for (label a = 0; a < D; ++a)
+            {
+                P[a] = vx[v][ax[a]] - xpa[a];
+                r2 += P[a]*P[a];
+            }
+            // Outside the support: d = 0 (support2 has slack for round-off)
+            if (r2 >= support2[v]) continue;
+
+            scalar e = 1;
+            if (diminish_)
+            {
+                const unsigned mask = ringAdj[s];
+                const label i0 = s - rb;
+                if (i0 < nv)
+                {
+                    // A cell vertex: its own B first, then the others
+                    e = sv.B[i0];
+                    for (label i = 0; i < nv; ++i)
+                    {
+                        if (i != i0 && (mask & (1u << i))) e += sv.B[i];
+                    }
+                }
+                else if (nv <= 4)
+                {
+                    e = subset[mask];
+                }
+                else
+                {
+                    e = 0;
+                    for (label i = 0; i < nv; ++i)
+                    {
+                        if (mask & (1u << i)) e += sv.B[i];
+                    }
+                }
+                e = max(e, scalar(0));
+            }
+            const scalar ds = e*bSpline(std::sqrt(r2)/h[v]);
+            if (ds == 0) continue;
+
+            sv_[ns] = v;
+            sd[ns] = ds;
+            for (label a = 0; a < D; ++a) sx[D*ns + a] = P[a];
+            ++ns;
+
+            // Moment matrix M = sum d P P^T (lower triangle, first row)
             M[0][0] += ds;
-            for (label i = 0; i < dim; ++i)
+            for (label i = 0; i < D; ++i)
             {
                 M[0][i + 1] += ds*P[i];
                 for (label j = 0; j <= i; ++j) M[i + 1][j + 1] += ds*P[i]*P[j];
             }
         }
-        // Symmetric: mirror the first row and the position block's lower
-        // triangle
         for (label i = 1; i < n; ++i)
         {
             M[i][0] = M[0][i];
             for (label j = 1; j < i; ++j) M[j][i] = M[i][j];
         }
 
-        scalar Minv[4][4];
+        scalar Minv[4][4] = {{0}};
         const scalar conditioning =
             (n == 3) ? invertMoment3(M, Minv) : invertMoment(n, M, Minv);
         if (conditioning < 1e-12)
@@ -231,26 +277,47 @@ void Foam::mlsRingKernel::compute
             FatalErrorInFunction
                 << type() << " kernel: the moment matrix of the particle at "
                 << xp << " in cell " << c << " is singular (its ring of "
-                << ring.size() << " vertices is degenerate)"
+                << re - rb << " vertices is degenerate)"
                 << exit(FatalError);
         }
 
         // [w_vp, grad w_vp] = d_vp M^-1 P_v
-        forAll(ring, s)
+        for (label s = 0; s < ns; ++s)
         {
-            if (d[s] == 0) continue;
-            const label v = ring[s];
-            const scalar P[4] = {1, dx[s][0], dx[s][1], dx[s][2]};
-            scalar q[4] = {0, 0, 0, 0};
+            const scalar* P = sx + D*s;
+            scalar q[n];
             for (label i = 0; i < n; ++i)
             {
-                for (label j = 0; j < n; ++j) q[i] += Minv[i][j]*P[j];
+                q[i] = Minv[i][0];
+                for (label j = 0; j < D; ++j) q[i] += Minv[i][j + 1]*P[j];
             }
             vector g(Zero);
-            for (label a = 0; a < dim; ++a) g[ax[a]] = d[s]*q[a + 1];
-            out.append(v, d[s]*q[0], g);
+            for (label a = 0; a < D; ++a) g[ax[a]] = sd[s]*q[a + 1];
+            vOut[k] = sv_[s];
+            wOut[k] = sd[s]*q[0];
+            gOut[k] = g;
+            ++k;
         }
-        out.endParticle();
+        out.start[p + 1] = k;
+    }
+    out.vertex.setSize(k);
+    out.w.setSize(k);
+    out.gradW.setSize(k);
+}
+
+
+void Foam::mlsRingKernel::compute
+(
+    const UList<vector>& x,
+    const labelUList& cells,
+    kernelWeights& out
+) const
+{
+    switch (mesh_.dim())
+    {
+        case 1: computeDim<1>(x, cells, out); break;
+        case 2: computeDim<2>(x, cells, out); break;
+        default: computeDim<3>(x, cells, out); break;
     }
 }
 
