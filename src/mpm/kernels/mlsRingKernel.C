@@ -94,6 +94,42 @@ scalar invertMoment(const label n, scalar M[4][4], scalar Minv[4][4])
     return diagMax > 0 ? minPivot/diagMax : 0;
 }
 
+// Moment matrix M = sum_s d_s P_s P_s^T, P_s = [1, x_v - x_p] (dx: D per
+// sample), summed over the samples in order
+template<int D>
+inline void momentMatrix
+(
+    const label ns,
+    const scalar* __restrict__ d,
+    const scalar* __restrict__ dx,
+    scalar M[4][4]
+)
+{
+    constexpr label n = D + 1;
+    scalar m[n][n];
+    for (label i = 0; i < n; ++i)
+        for (label j = 0; j < n; ++j) m[i][j] = 0;
+    for (label s = 0; s < ns; ++s)
+    {
+        const scalar ds = d[s];
+        const scalar* P = dx + D*s;
+        m[0][0] += ds;
+        for (label i = 0; i < D; ++i)
+        {
+            m[0][i + 1] += ds*P[i];
+            for (label j = 0; j <= i; ++j) m[i + 1][j + 1] += ds*P[i]*P[j];
+        }
+    }
+    for (label i = 0; i < n; ++i)
+    {
+        for (label j = i; j < n; ++j)
+        {
+            const scalar mij = (i == 0 || j == 0) ? m[0][max(i, j)] : m[j][i];
+            M[i][j] = M[j][i] = mij;
+        }
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -204,7 +240,6 @@ void Foam::mlsRingKernel::computeDim
 
         const label rb = ringStart[c];
         const label re = ringStart[c + 1];
-        scalar M[4][4] = {{0}};
         label ns = 0;
         for (label s = rb; s < re; ++s)
         {
@@ -254,20 +289,10 @@ void Foam::mlsRingKernel::computeDim
             sd[ns] = ds;
             for (label a = 0; a < D; ++a) sx[D*ns + a] = P[a];
             ++ns;
+        }
 
-            // Moment matrix M = sum d P P^T (lower triangle, first row)
-            M[0][0] += ds;
-            for (label i = 0; i < D; ++i)
-            {
-                M[0][i + 1] += ds*P[i];
-                for (label j = 0; j <= i; ++j) M[i + 1][j + 1] += ds*P[i]*P[j];
-            }
-        }
-        for (label i = 1; i < n; ++i)
-        {
-            M[i][0] = M[0][i];
-            for (label j = 1; j < i; ++j) M[j][i] = M[i][j];
-        }
+        scalar M[4][4];
+        momentMatrix<D>(ns, sd, sx, M);
 
         scalar Minv[4][4] = {{0}};
         const scalar conditioning =
@@ -281,21 +306,26 @@ void Foam::mlsRingKernel::computeDim
                 << exit(FatalError);
         }
 
-        // [w_vp, grad w_vp] = d_vp M^-1 P_v
+        // [w_vp, grad w_vp] = d_vp M^-1 P_v, column by column (the
+        // transpose makes the sums over j contiguous: vectorised)
+        scalar MinvT[n][n];
+        for (label i = 0; i < n; ++i)
+            for (label j = 0; j < n; ++j) MinvT[j][i] = Minv[i][j];
         for (label s = 0; s < ns; ++s)
         {
             const scalar* P = sx + D*s;
             scalar q[n];
-            for (label i = 0; i < n; ++i)
+            for (label i = 0; i < n; ++i) q[i] = MinvT[0][i];
+            for (label j = 0; j < D; ++j)
             {
-                q[i] = Minv[i][0];
-                for (label j = 0; j < D; ++j) q[i] += Minv[i][j + 1]*P[j];
+                for (label i = 0; i < n; ++i) q[i] += MinvT[j + 1][i]*P[j];
             }
-            vector g(Zero);
-            for (label a = 0; a < D; ++a) g[ax[a]] = sd[s]*q[a + 1];
+            const scalar ds = sd[s];
             vOut[k] = sv_[s];
-            wOut[k] = sd[s]*q[0];
-            gOut[k] = g;
+            wOut[k] = ds*q[0];
+            vector& g = gOut[k];
+            if (D < 3) g = Zero;
+            for (label a = 0; a < D; ++a) g[ax[a]] = ds*q[a + 1];
             ++k;
         }
         out.start[p + 1] = k;
