@@ -217,8 +217,9 @@ bool Foam::mpmSolver::step(mpmParticles& P, const scalar dt)
         for (label k = kw_.start[p]; k < kw_.start[p + 1]; ++k)
         {
             const label i = kw_.vertex[k];
-            grid_.force[i] -= (Vs & kw_.gradW[k]);
-            if (gravity) grid_.force[i] += kw_.w[k]*mg;
+            vector f = grid_.force[i] - (Vs & kw_.gradW[k]);
+            if (gravity) f += kw_.w[k]*mg;
+            grid_.force[i] = f;
         }
     }
 
@@ -278,15 +279,22 @@ bool Foam::mpmSolver::step(mpmParticles& P, const scalar dt)
     }
     const List<vector>& vGrad = musl_ ? grid_.force : grid_.newVelocity;
 
-    // 8. Deformation gradients (2.15), checked before anything is kept
+    // 8. Deformation gradients (2.15), checked before anything is kept,
+    // and the grid velocity at the particles for the positions (2.13),
+    // in one pass over the weights
     Fnew_.setSize(nP);
+    vGrid_.setSize(nP);
     for (label p = 0; p < nP; ++p)
     {
         tensor gradV(Zero);
+        vector vg(Zero);
         for (label k = kw_.start[p]; k < kw_.start[p + 1]; ++k)
         {
-            gradV += vGrad[kw_.vertex[k]]*kw_.gradW[k];
+            const label i = kw_.vertex[k];
+            gradV += vGrad[i]*kw_.gradW[k];
+            vg += kw_.w[k]*grid_.newVelocity[i];
         }
+        vGrid_[p] = vg;
         Fnew_[p] = (I + dt*gradV) & P.F[p];
         const scalar J = det(Fnew_[p]);
         if (!(J > 0) || !std::isfinite(J))
@@ -307,12 +315,7 @@ bool Foam::mpmSolver::step(mpmParticles& P, const scalar dt)
     // Positions (2.13): x_p + dt sum w v~_i (linear reproduction)
     for (label p = 0; p < nP; ++p)
     {
-        vector vg(Zero);
-        for (label k = kw_.start[p]; k < kw_.start[p + 1]; ++k)
-        {
-            vg += kw_.w[k]*grid_.newVelocity[kw_.vertex[k]];
-        }
-        P.x[p] += dt*vg;
+        P.x[p] += dt*vGrid_[p];
     }
 
     // 7. G2P velocities (and B) (USL: after the gradient)
