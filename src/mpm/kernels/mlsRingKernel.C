@@ -46,6 +46,52 @@ scalar invertMoment3(const scalar M[4][4], scalar Minv[4][4])
 }
 
 
+// Inverse of the symmetric 4 x 4 moment matrix (3D) M = [a b^T; b C] by
+// its Schur complement S = C - b b^T/a (M is positive semi-definite: d >= 0,
+// so no pivoting is needed): M^-1 = [(1 + b.u)/a, -u^T; -u, S^-1] with
+// u = S^-1 b/a.  Returns |det M| relative to the product of the diagonal
+// (0: singular), as invertMoment3 does.
+scalar invertMoment4(const scalar M[4][4], scalar Minv[4][4])
+{
+    const scalar a = M[0][0];
+    if (!(a > 0)) return 0;
+    const scalar ra = 1/a;
+    const scalar b0 = M[1][0], b1 = M[2][0], b2 = M[3][0];
+    const scalar s00 = M[1][1] - b0*b0*ra;
+    const scalar s01 = M[2][1] - b1*b0*ra;
+    const scalar s02 = M[3][1] - b2*b0*ra;
+    const scalar s11 = M[2][2] - b1*b1*ra;
+    const scalar s12 = M[3][2] - b2*b1*ra;
+    const scalar s22 = M[3][3] - b2*b2*ra;
+    const scalar c00 = s11*s22 - s12*s12;
+    const scalar c01 = s02*s12 - s01*s22;
+    const scalar c02 = s01*s12 - s02*s11;
+    const scalar detS = s00*c00 + s01*c01 + s02*c02;
+    const scalar scale = std::abs(M[1][1]*M[2][2]*M[3][3]);
+    if (detS == 0 || scale == 0) return 0;
+    const scalar r = 1/detS;
+    const scalar i00 = c00*r, i01 = c01*r, i02 = c02*r;
+    const scalar i11 = (s00*s22 - s02*s02)*r;
+    const scalar i12 = (s02*s01 - s00*s12)*r;
+    const scalar i22 = (s00*s11 - s01*s01)*r;
+    const scalar u0 = (i00*b0 + i01*b1 + i02*b2)*ra;
+    const scalar u1 = (i01*b0 + i11*b1 + i12*b2)*ra;
+    const scalar u2 = (i02*b0 + i12*b1 + i22*b2)*ra;
+    Minv[0][0] = (1 + b0*u0 + b1*u1 + b2*u2)*ra;
+    Minv[0][1] = Minv[1][0] = -u0;
+    Minv[0][2] = Minv[2][0] = -u1;
+    Minv[0][3] = Minv[3][0] = -u2;
+    Minv[1][1] = i00;
+    Minv[1][2] = Minv[2][1] = i01;
+    Minv[1][3] = Minv[3][1] = i02;
+    Minv[2][2] = i11;
+    Minv[2][3] = Minv[3][2] = i12;
+    Minv[3][3] = i22;
+    // det M = a det S; the diagonal's product a M11 M22 M33
+    return std::abs(detS)/scale;
+}
+
+
 // Invert the symmetric (n x n, n <= 4) moment matrix M by Gauss-Jordan
 // elimination with partial pivoting.  Returns the smallest pivot relative to
 // the largest diagonal entry (0: singular).
@@ -296,7 +342,9 @@ void Foam::mlsRingKernel::computeDim
 
         scalar Minv[4][4] = {{0}};
         const scalar conditioning =
-            (n == 3) ? invertMoment3(M, Minv) : invertMoment(n, M, Minv);
+            (n == 3) ? invertMoment3(M, Minv)
+          : (n == 4) ? invertMoment4(M, Minv)
+          : invertMoment(n, M, Minv);
         if (conditioning < 1e-12)
         {
             FatalErrorInFunction
