@@ -208,6 +208,18 @@ Foam::mlsRingKernel::mlsRingKernel
     {
         support2_[v] = sqr(1.5*h_[v])*(1 + 1e-10);
     }
+    // computeDim<3> writes the gradients as (x y z)
+    if
+    (
+        mesh.dim() == 3
+     && (mesh.axis(0) != 0 || mesh.axis(1) != 1 || mesh.axis(2) != 2)
+    )
+    {
+        FatalErrorInFunction
+            << "3D mesh view with solution axes (" << mesh.axis(0) << ' '
+            << mesh.axis(1) << ' ' << mesh.axis(2) << "), not (0 1 2)"
+            << exit(FatalError);
+    }
 }
 
 
@@ -371,9 +383,17 @@ void Foam::mlsRingKernel::computeDim
             const scalar ds = sd[s];
             vOut[k] = sv_[s];
             wOut[k] = ds*q[0];
-            vector& g = gOut[k];
-            if (D < 3) g = Zero;
-            for (label a = 0; a < D; ++a) g[ax[a]] = ds*q[a + 1];
+            if (D == 3)
+            {
+                // The solution axes of a 3D mesh are x, y, z
+                gOut[k] = vector(ds*q[1], ds*q[2], ds*q[3]);
+            }
+            else
+            {
+                vector& g = gOut[k];
+                g = Zero;
+                for (label a = 0; a < D; ++a) g[ax[a]] = ds*q[a + 1];
+            }
             ++k;
         }
         out.start[p + 1] = k;
