@@ -75,6 +75,10 @@ pimplePerUnit = pimpleClock/span
 for m in names:
     r[m]["speedup"] = pimplePerUnit/r[m]["foamPerUnit"]
 
+# The reference: the start state held over the rollout
+held50, heldAll = grep(os.path.join(run, "bsms", "log.bsmsTrain"),
+                       r"the start state held: RMSE-50 (\S+)  RMSE-all (\S+)")
+
 # Plot
 fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
 for m, c in (("bsms", "C0"), ("mgn", "C3")):
@@ -85,6 +89,8 @@ for m, c in (("bsms", "C0"), ("mgn", "C3")):
     perStep = r[m]["perStep"]
     ax[1].semilogy([int(row[0])*perStep/60 for row in v],
                    [float(row[4]) for row in v], c + "o-", label=names[m])
+ax[0].axhline(heldAll, color="0.5", ls="--",
+              label="start state held (RMSE-all %.3g)" % heldAll)
 ax[0].set_xlabel("rollout step (model deltaT)")
 ax[0].set_ylabel("RMSE of U against pimpleFoam [m/s]")
 ax[0].set_title("held-out inflow %s: rollout from the recorded start" % held[1:])
@@ -108,6 +114,7 @@ rows = [
     ("RMSE-1 [m/s]", b["e1"], g["e1"], b["e1"]/g["e1"]),
     ("RMSE-50 [m/s]", b["e50"], g["e50"], b["e50"]/g["e50"]),
     ("RMSE-all [m/s] (%d steps)" % b["nroll"], b["eall"], g["eall"], b["eall"]/g["eall"]),
+    ("RMSE-50 / RMSE-all of holding the start state [m/s]", "%.4g / %.4g" % (held50, heldAll), "", None),
     ("inference time per model step [ms]", b["modelMs"], g["modelMs"], b["modelMs"]/g["modelMs"]),
     ("bsmsFoam wall time per unit simulated time [s]", b["foamPerUnit"], g["foamPerUnit"],
      b["foamPerUnit"]/g["foamPerUnit"]),
