@@ -108,6 +108,7 @@ Usage
 #include "bsmsModelSpec.H"
 #include "bsmsFieldIO.H"
 #include "bsmsSurrogateModel.H"
+#include "bsmsTrajectory.H"
 
 #include <chrono>
 #include <cmath>
@@ -122,15 +123,6 @@ using namespace Foam;
 
 namespace
 {
-
-//- A recorded case: its states at the written times (>= startTime)
-struct trajectory
-{
-    fileName dir;
-    scalarList times;
-    std::vector<std::vector<double>> states;
-};
-
 
 wordList getWords(const dictionary& dict, const word& key)
 {
@@ -165,56 +157,6 @@ fileNameList getCases(const dictionary& dict, const fileNameList& deflt)
 }
 
 
-//- The states of a case's written times >= tStart (at least 2)
-trajectory readTrajectory
-(
-    const fileName& caseName,
-    const fileName& root,
-    const scalar tStart,
-    const bsmsModelSpec& spec,
-    labelList& comps,
-    const label nCells,
-    const dictionary& dict
-)
-{
-    trajectory tr;
-    tr.dir = caseName;
-    tr.dir.expand();
-    if (!tr.dir.isAbsolute()) tr.dir = root/tr.dir;
-    tr.dir.clean();
-    DynamicList<instant> times;
-    for (const instant& t : TimePaths::findTimes(tr.dir))
-    {
-        if (t.name() != "constant" && t.value() >= tStart - SMALL)
-        {
-            times.append(t);
-        }
-    }
-    if (times.size() < 2)
-    {
-        FatalIOErrorInFunction(dict)
-            << "The case " << tr.dir << " (entry 'cases' in " << dict.name()
-            << ") has " << times.size() << " written time(s) from t = "
-            << (tStart > -GREAT ? tStart : 0) << " on; at least 2 are"
-            << " needed for a training pair (no pairs: empty dataset)"
-            << exit(FatalIOError);
-    }
-    for (const instant& t : times)
-    {
-        tr.times.append(t.value());
-        tr.states.push_back
-        (
-            readFieldState
-            (
-                tr.dir/t.name(), spec.inputFields, nCells, comps, dict,
-                "inputFields"
-            )
-        );
-    }
-    return tr;
-}
-
-
 double secondsSince(const std::chrono::steady_clock::time_point& t0)
 {
     return std::chrono::duration<double>
@@ -243,48 +185,6 @@ double procStatusMB(const std::string& key)
     return 0;
 }
 
-
-//- RMSE-1, RMSE-50, RMSE-all of the model on one trajectory and the
-//  squared error per rollout step; seconds per model step
-struct rolloutErrors
-{
-    double rmse1 = 0;
-    double rmse50 = 0;
-    double rmseAll = 0;
-    std::vector<double> mse;
-    double secondsPerStep = 0;
-};
-
-
-rolloutErrors validate(bsmsSurrogateModel& m, const trajectory& tr)
-{
-    rolloutErrors r;
-    const label n = tr.states.size() - 1;
-    double sum1 = 0;
-    for (label k = 0; k < n; ++k)
-    {
-        std::vector<double> s(tr.states[k]);
-        m.advance(s);
-        sum1 += m.outputMse(s, tr.states[k + 1]);
-    }
-    r.rmse1 = std::sqrt(sum1/n);
-
-    std::vector<double> s(tr.states[0]);
-    const auto t0 = std::chrono::steady_clock::now();
-    double sum = 0, sum50 = 0;
-    for (label k = 0; k < n; ++k)
-    {
-        m.advance(s);
-        const double e = m.outputMse(s, tr.states[k + 1]);
-        r.mse.push_back(e);
-        sum += e;
-        if (k < 50) sum50 += e;
-    }
-    r.secondsPerStep = secondsSince(t0)/n;
-    r.rmse50 = std::sqrt(sum50/min(n, label(50)));
-    r.rmseAll = std::sqrt(sum/n);
-    return r;
-}
 
 } // End anonymous namespace
 
@@ -432,12 +332,15 @@ int main(int argc, char *argv[])
     // The recorded cases
     const label nCells = mesh.nCells();
     labelList comps;
-    std::vector<trajectory> train, valid;
+    std::vector<bsmsTrajectory> train, valid;
     for (const fileName& cn : caseNames)
     {
         train.push_back
         (
-            readTrajectory(cn, runTime.path(), tStart, spec, comps, nCells, dict)
+            bsmsTrajectory::read
+            (
+                cn, runTime.path(), tStart, spec, comps, nCells, dict
+            )
         );
         Info<< "Case " << train.back().dir << ": "
             << train.back().times.size() << " times, "
@@ -447,7 +350,10 @@ int main(int argc, char *argv[])
     {
         valid.push_back
         (
-            readTrajectory(cn, runTime.path(), tStart, spec, comps, nCells, dict)
+            bsmsTrajectory::read
+            (
+                cn, runTime.path(), tStart, spec, comps, nCells, dict
+            )
         );
         Info<< "Validation case " << valid.back().dir << ": "
             << valid.back().times.size() - 1 << " rollout steps" << nl;
@@ -457,7 +363,7 @@ int main(int argc, char *argv[])
 
     // The model time step: the interval of the written times (uniform)
     spec.deltaT = train[0].times[1] - train[0].times[0];
-    for (const trajectory& tr : train)
+    for (const bsmsTrajectory& tr : train)
     {
         for (label k = 0; k + 1 < tr.times.size(); ++k)
         {
@@ -506,7 +412,7 @@ int main(int argc, char *argv[])
             bool constant = true;
             if (m.used(c))
             {
-                for (const trajectory& tr : train)
+                for (const bsmsTrajectory& tr : train)
                 {
                     for (const auto& x : tr.states)
                     {
@@ -574,23 +480,15 @@ int main(int argc, char *argv[])
     const fileName outDir(runTime.path()/"postProcessing"/"bsmsTrain");
     mkDir(outDir);
     // The reference a model must beat: the start state held (persistence)
-    for (const trajectory& tr : valid)
+    for (const bsmsTrajectory& tr : valid)
     {
-        double sum = 0, sum50 = 0;
-        const label n = tr.states.size() - 1;
-        for (label k = 0; k < n; ++k)
-        {
-            const double e = m.outputMse(tr.states[0], tr.states[k + 1]);
-            sum += e;
-            if (k < 50) sum50 += e;
-        }
+        const bsmsRolloutErrors r = bsmsPersistence(m, tr);
         char buf[200];
         std::snprintf
         (
             buf, sizeof(buf),
             "Validation %s, the start state held: RMSE-50 %.4e  RMSE-all %.4e",
-            tr.dir.name().c_str(), std::sqrt(sum50/min(n, label(50))),
-            std::sqrt(sum/n)
+            tr.dir.name().c_str(), r.rmse50, r.rmseAll
         );
         Info<< buf << nl;
     }
@@ -608,9 +506,9 @@ int main(int argc, char *argv[])
                 << nl;
         }
         char buf[300];
-        for (const trajectory& tr : valid)
+        for (const bsmsTrajectory& tr : valid)
         {
-            const rolloutErrors r = validate(m, tr);
+            const bsmsRolloutErrors r = bsmsValidate(m, tr);
             std::snprintf
             (
                 buf, sizeof(buf),
@@ -675,7 +573,7 @@ int main(int argc, char *argv[])
         for (label b = 0; b < batch; ++b)
         {
             const auto& pr = pairs[pick(rng)];
-            const trajectory& tr = train[pr.first];
+            const bsmsTrajectory& tr = train[pr.first];
             noisy = tr.states[pr.second];
             if (noise > 0)
             {
@@ -777,7 +675,7 @@ int main(int argc, char *argv[])
         double sum = 0;
         for (const auto& pr : pairs)
         {
-            const trajectory& tr = train[pr.first];
+            const bsmsTrajectory& tr = train[pr.first];
             x.clear();
             y.clear();
             m.appendInput(tr.states[pr.second], x);
