@@ -23,7 +23,7 @@ model        bsms;
 latent       8;
 hidden       8;
 levels       { seeding closeCenter; minNodes 20; }
-steps        20;
+steps        4;
 startTime    0.05;
 batch        4;
 lr           3e-3;
@@ -32,10 +32,10 @@ lrDecay      0.1;
 decaySteps   100;
 noise        0.01;
 seed         1;
-printInterval 10;
-checkpointInterval 10;
+printInterval 2;
+checkpointInterval 2;
 maxTrainTime 60;
-validation   { cases ("../cavity2"); interval 10; }
+validation   { cases ("../cavity2"); interval 4; }
 DICT
 '''
 
