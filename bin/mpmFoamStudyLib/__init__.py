@@ -1,0 +1,1 @@
+"""mpmFoamStudy: the modules of the speed-accuracy study tool (bin/mpmFoamStudy)."""
