@@ -44,16 +44,18 @@ def columns(study):
             ["front", "reference", "log"])
 
 
-def row(study, r):
+def row(study, r, precise=False):
+    """A table row; precise: every digit of the errors (the CSV)."""
     size = "particles" if "particles" in study.cost else "cells"
     lab = r.get("labels", {})
     vals = [r["point"]] + [lab.get(s.name, "-") for s in study.settings]
     st = r.get("status", "not run")
-    vals += [st, fmt(r.get("wall"), "%.3f"), fmt(r.get("cpu"), "%.3f"),
+    vals += [st, fmt(r.get("wall"), "%.4f" if precise else "%.3f"),
+             fmt(r.get("cpu"), "%.4f" if precise else "%.3f"),
              fmt(r.get("steps")), fmt(r.get(size)), fmt(r.get("updates")),
-             fmt(r.get("error"), "%.4e")]
+             fmt(r.get("error"), "%.10g" if precise else "%.4e")]
     if study.error.type == "finest":
-        vals.append(fmt(r.get("value"), "%.8g"))
+        vals.append(fmt(r.get("value"), "%.10g"))
     vals += ["yes" if r.get("front") else "no",
              ("finest" if r.get("finest") else "yes") if r.get("reference")
              else "no",
@@ -67,7 +69,7 @@ def writeCsv(study, results, path):
         w = csv.writer(f)
         w.writerow(columns(study))
         for r in results:
-            w.writerow(row(study, r))
+            w.writerow(row(study, r, precise=True))
 
 
 def _mdTable(head, rows):
@@ -127,7 +129,8 @@ def summaryLines(study, results, targets, axis):
 
 def _text(r, vary):
     lab = r.get("labels", {})
-    return "  ".join("%s %s" % (n, lab.get(n, "-")) for n in vary)
+    return "  ".join("%s %s" % (n, lab.get(n, "-")) for n in vary
+                     if lab.get(n) != "(case)")
 
 
 def writeMarkdown(study, results, targets, axis, info, path):

@@ -16,7 +16,7 @@ import time
 from . import measures
 from .foamDict import DictError, asNumber, setEntry, toText
 from .measures import MeasureError
-from .studyDict import CASE
+from .studyDict import CASE, logName
 
 # Run outputs that a copy of the case leaves out (unless 'copy' names them)
 _SKIP = re.compile(r"^(study|processor[0-9]+|postProcessing|VTK|log\..*|"
@@ -99,7 +99,7 @@ def _logNames(commands, taken):
     """log.<first word> per command, made unique with .2, .3 ..."""
     out = []
     for c in commands:
-        base = "log." + os.path.basename(c.split()[0])
+        base = "log." + logName(c)
         name, k = base, 1
         while name in taken:
             k += 1

@@ -62,9 +62,14 @@ class Point:
         return {s.name: s.label(self.values[s.name]) for s in self.settings}
 
     def text(self, varyingOnly=None):
+        """'name value  name value' (settings left as the case has them
+        are left out)."""
         names = varyingOnly or [s.name for s in self.settings]
-        lab = self.labels()
-        return "  ".join("%s %s" % (n, lab[n]) for n in names)
+        return "  ".join("%s %s" % (n, self._setting(n).label(self.values[n]))
+                         for n in names if self.values[n] is not CASE)
+
+    def _setting(self, name):
+        return [s for s in self.settings if s.name == name][0]
 
     def key(self):
         """Comparable identity of the point's values (stored results)."""
@@ -199,7 +204,7 @@ class Study:
             raise DictError("solver: the timed command (a word or a quoted "
                             "string) is missing")
         self.solver = str(solver)
-        self.solverLog = "log." + _logName(self.solver)
+        self.solverLog = "log." + logName(self.solver)
         self.copy = d.get("copy")
         if self.copy is not None and not isinstance(self.copy, list):
             self.copy = [self.copy]
@@ -415,7 +420,8 @@ def _regex(v, where):
                         % (where, v, e))
 
 
-def _logName(command):
+def logName(command):
     """log.<name> of a command: its first word without directories."""
     first = command.split()[0] if command.split() else "command"
-    return os.path.basename(first)
+    name = re.sub(r"[^A-Za-z0-9_.+-]", "", os.path.basename(first))
+    return name or "command"
