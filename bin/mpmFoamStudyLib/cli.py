@@ -14,6 +14,7 @@ import time
 
 from . import front as fr
 from . import report, runner
+from .eta import Estimator
 from .foamDict import DictError
 from .studyDict import Study
 
@@ -155,8 +156,8 @@ def progress(study, point, r, k, n, elapsed, eta):
         if len(r.get("walls", [])) > 1:
             what += " (of %s)" % " ".join("%.3f" % w for w in r["walls"])
     else:
-        what = "FAILED (%s; %s)" % (r.get("stage"), r.get("log") or
-                                    r.get("message"))
+        what = "FAILED (%s; %s)" % (r.get("stage"), os.path.relpath(
+            r["log"], study.caseDir) if r.get("log") else "see below")
     print("point %d/%d  %s  %s  elapsed %s  ETA %s"
           % (k, n, point.text(vary), what, duration(elapsed),
              duration(eta)), flush=True)
@@ -215,6 +216,7 @@ def main(argv, doc):
         t0 = time.time()
         todo = [p for p in study.points if only is None or p.index in only]
         done = 0
+        est = Estimator(study)
         for p in study.points:
             if p not in todo:
                 results.append(storedResult(studyDir, p) or notRun(p))
@@ -222,9 +224,10 @@ def main(argv, doc):
             r = runner.runPoint(study, p, studyDir, args.keep, repeat)
             results.append(r)
             done += 1
+            est.add(p, r["elapsed"])
             el = time.time() - t0
             progress(study, p, r, p.index, len(study.points), el,
-                     el / done * (len(todo) - done))
+                     est.remaining(todo[done:]))
             report.writeCsv(study, results, os.path.join(studyDir,
                                                          "results.csv"))
         info.append(("study wall time", duration(time.time() - t0)))
