@@ -98,6 +98,27 @@ def loadLine():
     return out
 
 
+def toolkitVersion():
+    """The toolkit's git commit (with '+ changes' for a modified tree)."""
+    top = os.environ.get("MPMFOAM_DIR")
+    if not top:
+        return "unknown (MPMFOAM_DIR not set)"
+    try:
+        head = subprocess.run(["git", "-C", top, "rev-parse", "--short",
+                               "HEAD"], stdout=subprocess.PIPE,
+                              stderr=subprocess.DEVNULL,
+                              universal_newlines=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", top, "status", "--porcelain",
+                                "--untracked-files=no", "src",
+                                "applications"], stdout=subprocess.PIPE,
+                               stderr=subprocess.DEVNULL,
+                               universal_newlines=True).stdout.strip()
+    except OSError:
+        return "unknown"
+    return (head or "unknown") + (" + changes in src/ or applications/"
+                                  if dirty else "")
+
+
 def duration(s):
     if s < 90:
         return "%.0f s" % s
@@ -146,7 +167,7 @@ def notRun(point):
 
 
 def progress(study, point, r, k, n, elapsed, eta):
-    vary = study.varying() or [s.name for s in study.settings]
+    vary = study.textNames(point.reference)
     if r["status"] == "ok":
         if "error" in r:
             what = "error %.3e" % r["error"]
@@ -189,6 +210,7 @@ def main(argv, doc):
     info = [("host", socket.gethostname()),
             ("started", datetime.datetime.now().strftime("%Y-%m-%d %H:%M")),
             ("load at the start (uptime)", load),
+            ("toolkit", toolkitVersion()),
             ("solver runs per point", repeat)]
     results = []
     infoPath = os.path.join(studyDir, "study.json")

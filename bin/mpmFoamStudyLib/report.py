@@ -84,12 +84,11 @@ def summaryLines(study, results, targets, axis):
     lines = []
     frontPts = [r for r in results if r.get("front")]
     frontPts.sort(key=lambda r: (fr.costOf(r, axis), r["error"]))
-    vary = study.varying()
     lines.append("Pareto front (%s against %s), %d of %d points:"
                  % (study.error.name, axis, len(frontPts), len(results)))
     for r in frontPts:
         lines.append("  point %d  %s  %s %.4e  %s %s"
-                     % (r["point"], _text(r, vary), study.error.name,
+                     % (r["point"], _text(r, study), study.error.name,
                         r["error"], axis, fmt(fr.costOf(r, axis), "%.4g")))
     for t in targets:
         c = fr.cheapest(results, axis, t)
@@ -102,7 +101,7 @@ def summaryLines(study, results, targets, axis):
         else:
             lines.append("target %s <= %g: cheapest point %d  %s  %s %.4e  "
                          "%s %s" % (study.error.name, t, c["point"],
-                                    _text(c, vary), study.error.name,
+                                    _text(c, study), study.error.name,
                                     c["error"], axis,
                                     fmt(fr.costOf(c, axis), "%.4g")))
     for ref in results:
@@ -111,14 +110,14 @@ def summaryLines(study, results, targets, axis):
             continue
         c = fr.cheapest(results, axis, ref["error"])
         head = ("reference point %d  %s  %s %.4e  wall %.3f s"
-                % (ref["point"], _text(ref, vary), study.error.name,
+                % (ref["point"], _text(ref, study), study.error.name,
                    ref["error"], ref["wall"]))
         if c is None:
             lines.append(head + ": no point reaches its error")
         else:
             lines.append(head + ": equal accuracy at point %d  %s  %s %.4e  "
                          "wall %.3f s: wall ratio %.3f"
-                         % (c["point"], _text(c, vary), study.error.name,
+                         % (c["point"], _text(c, study), study.error.name,
                             c["error"], c["wall"], c["wall"] / ref["wall"]))
     failed = [r for r in results if r.get("status") == "failed"]
     for r in failed:
@@ -127,7 +126,8 @@ def summaryLines(study, results, targets, axis):
     return lines
 
 
-def _text(r, vary):
+def _text(r, study):
+    vary = study.textNames(r.get("reference"))
     lab = r.get("labels", {})
     return "  ".join("%s %s" % (n, lab.get(n, "-")) for n in vary
                      if lab.get(n) != "(case)")
@@ -146,7 +146,7 @@ def writeMarkdown(study, results, targets, axis, info, path):
     out.append("")
     frontPts = sorted([r for r in results if r.get("front")],
                       key=lambda r: (fr.costOf(r, axis), r["error"]))
-    vary = study.varying()
+    vary = study.textNames(False)
     if frontPts:
         out += ["## Pareto front (%s against %s)" % (study.error.name, axis),
                 ""]
@@ -168,7 +168,7 @@ def plot(study, results, targets, axis, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    vary = study.varying()
+    vary = study.varying(True)
     colourBy = str(study.colourBy) if study.colourBy else \
         (vary[0] if vary else None)
     rest = [n for n in vary if n != colourBy]
@@ -181,30 +181,36 @@ def plot(study, results, targets, axis, path):
     markers = "osD^v<>ph*"
 
     def values(name):
+        """The setting's values over the compared points (numbers in
+        order)."""
         seen = []
         for r in results:
             v = r.get("labels", {}).get(name)
-            if v is not None and v not in seen:
+            if v is not None and v not in seen and not r.get("reference"):
                 seen.append(v)
-        return seen
+        try:
+            return sorted(seen, key=float)
+        except ValueError:
+            return seen
     cvals = values(colourBy) if colourBy else []
     mvals = values(markerBy) if markerBy else []
 
     fig, ax = plt.subplots(figsize=(8, 6))
     for r in ok:
         lab = r["labels"]
-        ci = cvals.index(lab[colourBy]) if colourBy else 0
-        mi = mvals.index(lab[markerBy]) if markerBy else 0
+        ci = cvals.index(lab[colourBy]) if lab.get(colourBy) in cvals else 0
+        mi = mvals.index(lab[markerBy]) if lab.get(markerBy) in mvals else 0
         x, y = fr.costOf(r, axis), r["error"]
         if r.get("reference"):
             ax.plot(x, y, "*", ms=14, color="k", zorder=4)
             ax.axhline(y, color="k", lw=0.7, ls="--")
-            ax.annotate("reference %d" % r["point"], (x, y), fontsize=7,
-                        xytext=(6, -10), textcoords="offset points")
+            ax.annotate("reference %d: %s" % (r["point"], _text(r, study)),
+                        (x, y), fontsize=7, xytext=(-6, -12), ha="right",
+                        textcoords="offset points")
             continue
         ax.plot(x, y, markers[mi % len(markers)], color=cmap(ci % 10),
                 ms=6, alpha=0.85, zorder=3)
-        if labelBy:
+        if labelBy and (len(ok) <= 40 or r.get("front")):
             ax.annotate(" ".join(lab[n] for n in labelBy), (x, y),
                         fontsize=6, xytext=(3, 3), textcoords="offset points")
     frontPts = sorted([r for r in ok if r.get("front")],
@@ -242,7 +248,8 @@ def plot(study, results, targets, axis, path):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7, loc="best")
     if labelBy:
-        fig.text(0.01, 0.01, "labels: " + " ".join(labelBy), fontsize=7)
+        fig.text(0.01, 0.01, "labels: " + " ".join(labelBy) +
+                 (" (front points only)" if len(ok) > 40 else ""), fontsize=7)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)

@@ -204,7 +204,10 @@ class Study:
             raise DictError("solver: the timed command (a word or a quoted "
                             "string) is missing")
         self.solver = str(solver)
-        self.solverLog = "log." + logName(self.solver)
+        self.solverLog = str(d.get("solverLog", "log." + logName(self.solver)))
+        if not re.match(r"^[A-Za-z0-9_.+-]+$", self.solverLog):
+            raise DictError("solverLog: '%s' is not a plain file name"
+                            % self.solverLog)
         self.copy = d.get("copy")
         if self.copy is not None and not isinstance(self.copy, list):
             self.copy = [self.copy]
@@ -237,6 +240,9 @@ class Study:
         self.targets = [_positive(t, "targets")
                         for t in _asList(d.get("targets", []))]
         self.colourBy = d.get("colourBy")
+        if self.colourBy is not None and str(self.colourBy) not in self.byName:
+            raise DictError("colourBy: '%s' is not a setting (settings: %s)"
+                            % (toText(self.colourBy), " ".join(self.byName)))
         self._points(d)
         if self.error.type == "finest":
             sel = self.error.finest
@@ -355,11 +361,20 @@ class Study:
                     raise DictError(w + "copy: %s is not in the case %s"
                                     % (c, self.caseDir))
 
-    def varying(self):
-        """Names of the settings that take more than one value."""
+    def varying(self, compared=False):
+        """Names of the settings that take more than one value (compared:
+        over the points other than the references)."""
+        pts = [p for p in self.points if not (compared and p.reference)]
         return [s.name for s in self.settings
                 if len({toText(p.values[s.name]) if p.values[s.name]
-                        is not CASE else None for p in self.points}) > 1]
+                        is not CASE else None for p in pts}) > 1]
+
+    def textNames(self, reference):
+        """The settings that name a point in text: those that vary among
+        the compared points; for a reference every setting it sets."""
+        if reference:
+            return [s.name for s in self.settings]
+        return self.varying(True) or [s.name for s in self.settings]
 
 
 # ---------------------------------------------------------------------------
