@@ -52,3 +52,35 @@ TEST(dictionaryChecks, messagesNameEntryValueAndAllowed)
     m = testHelpers::ioErrorOf([&]{ getAs<scalar>(d, "missing", "a number"); });
     EXPECT_NE(m.find("'missing' is missing"), std::string::npos) << m;
 }
+
+
+// Entries that overflow the products of a model, lists of a negative size
+// (OpenFOAM's List raises a FatalError "bad size", not a FatalIOError) and
+// vectors with huge components all end in the message naming the entry
+TEST(dictionaryChecks, boundsAndBadLists)
+{
+    using namespace dictionaryChecks;
+    const dictionary d = testHelpers::dictOf
+    (
+        "a 1e300; b 0.5; w -1; v (1e300 0 0); u (1 2 3);"
+    );
+    EXPECT_DOUBLE_EQ(getInRange(d, "b", 0, 1), 0.5);
+    EXPECT_DOUBLE_EQ(getInRange(d, "missing", 0.25, 0, 1), 0.25);
+    EXPECT_EQ(getBoundedVector(d, "u", Zero, 10, "a vector"), vector(1, 2, 3));
+
+    std::string m = testHelpers::ioErrorOf([&]{ getInRange(d, "a", 0, 1e30); });
+    EXPECT_NE(m.find("'a'"), std::string::npos) << m;
+    EXPECT_NE(m.find("1e+300"), std::string::npos) << m;
+    EXPECT_NE(m.find("<= 1e+30"), std::string::npos) << m;
+
+    m = testHelpers::ioErrorOf([&]{ getAs<List<scalar>>(d, "w", "a list"); });
+    EXPECT_NE(m.find("'w'"), std::string::npos) << m;
+    EXPECT_NE(m.find("a list"), std::string::npos) << m;
+
+    m = testHelpers::ioErrorOf([&]{ getBoundedVector(d, "v", Zero, 1e30, "a velocity"); });
+    EXPECT_NE(m.find("'v'"), std::string::npos) << m;
+    EXPECT_NE(m.find("magnitude <= 1e+30"), std::string::npos) << m;
+
+    // FatalError is left as it was (not throwing)
+    EXPECT_FALSE(FatalError.throwExceptions(false));
+}

@@ -427,7 +427,14 @@ TEST(mpmMaterial, badInputMessages)
     check("type linearElastic; rho 1000; E 1e6; nu -1;", "nu",
         {"-1 < nu < 0.5"});
     check("type fixedCorotated; rho 0; E 1e6; nu 0.3;", "rho",
-        {"a finite number > 0"});
+        {"a finite number > 1e-30"});
+    // Values that overflow the wave speed or the stresses
+    check("type neoHookean; rho 1000; E 1e300; nu 0.3;", "E",
+        {"1e+300", "<= 1e+30"});
+    check("type neoHookean; rho 1e300; E 1e6; nu 0.3;", "rho",
+        {"1e+300", "<= 1e+30"});
+    check("type neoHookean; rho 1e-200; E 1e6; nu 0.3;", "rho",
+        {"1e-200", "> 1e-30"});
     check("type rubber; rho 1000; E 1e6; nu 0.3;", "type",
         {"rubber", "fixedCorotated", "linearElastic", "neoHookean"});
     check("rho 1000; E 1e6; nu 0.3;", "type",
@@ -462,3 +469,49 @@ TEST(mpmMaterial, invertedParticleStops)
 
 
 // ************************************************************************* //
+
+
+// The wave speed of the current state: the reference speed at F = I (the
+// time step of small-strain runs is unchanged), larger when stretched or
+// crushed: the Kirchhoff P-wave modulus of each model, and an upper bound
+// of the exact one (the Gershgorin bound of the largest stretch and the
+// geometric |tau| term only add)
+TEST(mpmMaterial, currentWaveSpeed)
+{
+    for (const word type : {"linearElastic", "neoHookean", "fixedCorotated"})
+    {
+        const auto m = material(type);
+        List<tensor> F(2, tensor::I);
+        List<symmTensor> sigma(2, symmTensor::zero);
+        List<scalar> psi(2, scalar(0));
+        m->stress(F, sigma, psi);
+        EXPECT_DOUBLE_EQ(m->maxWaveSpeed(F, sigma), m->waveSpeed()) << type;
+
+        // Stretched to J = 20 in the plane (plane strain, F_zz = 1)
+        const scalar s = std::sqrt(20.0);
+        F[1] = tensor(s, 0, 0, 0, s, 0, 0, 0, 1);
+        m->stress(F, sigma, psi);
+        const scalar c = m->maxWaveSpeed(F, sigma);
+        EXPECT_TRUE(std::isfinite(c)) << type;
+        EXPECT_GT(c, 2*m->waveSpeed()) << type;
+
+        // The fastest particle sets it: the same as that particle alone
+        List<tensor> F1(1, F[1]);
+        List<symmTensor> sigma1(1, sigma[1]);
+        EXPECT_DOUBLE_EQ(c, m->maxWaveSpeed(F1, sigma1)) << type;
+    }
+
+    // neoHookean, uniaxial stretch l: d tau/d ln l = 2 mu l^2 + lambda
+    // exactly (diagonal F: Gershgorin is exact); plus J |sigma|
+    const auto m = material("neoHookean");
+    const scalar l = 1.5;
+    List<tensor> F(1, tensor(l, 0, 0, 0, 1, 0, 0, 0, 1));
+    List<symmTensor> sigma(1, symmTensor::zero);
+    List<scalar> psi(1, scalar(0));
+    m->stress(F, sigma, psi);
+    const scalar tauMax = l*max(max(mag(sigma[0].xx()), mag(sigma[0].yy())),
+        mag(sigma[0].zz()));
+    const scalar K = 2*m->mu()*l*l + m->lambda() + tauMax;
+    EXPECT_NEAR(m->maxWaveSpeed(F, sigma), std::sqrt(K/m->rho()),
+        1e-12*std::sqrt(K/m->rho()));
+}

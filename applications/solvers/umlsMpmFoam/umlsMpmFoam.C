@@ -20,7 +20,11 @@ Description
     The log shows each step's number, time, dt, active vertices and
     particles.  A step that would go non-finite or invert a particle is
     refused: the last good state is written and the run stops with a
-    message saying where and why.
+    message saying where and why.  So does a time step that would need
+    more than maxSteps steps to reach endTime (a wave speed or a particle
+    velocity out of scale).  A run whose mechanical energy grows beyond
+    what the system holds (an unstable step) stops with a message naming
+    the last good time written.
 
 Usage
     umlsMpmFoam [-case dir]
@@ -87,8 +91,19 @@ int main(int argc, char *argv[])
             << " holds no MPM cloud. Seed one with mpmSetParticles."
             << exit(FatalError);
     }
+    if (P.size() == 0)
+    {
+        FatalErrorInFunction
+            << "No particles: the MPM cloud "
+            << runTime.timePath()/cloud::prefix/cloudName
+            << " holds no particle. Seed some with mpmSetParticles."
+            << exit(FatalError);
+    }
     solver.initialise(P);
     Info<< "Particles: " << P.size() << nl << endl;
+
+    // The last time whose cloud is on disk (for messages)
+    word lastWritten(runTime.timeName());
 
     // For function objects (mpmConservation)
     mpmState state(mesh, solver, P);
@@ -99,7 +114,27 @@ int main(int argc, char *argv[])
 
     while (runTime.run())
     {
-        const scalar dt = solver.deltaT(P);
+        scalar dt = solver.deltaT(P);
+
+        // A step too small to reach endTime in maxSteps steps: the state
+        // is still good, so it is written before stopping
+        const scalar remaining = runTime.endTime().value() - runTime.value();
+        if (!(dt > 0) || remaining > solver.maxSteps()*dt)
+        {
+            mpmCloudIO::write(mesh, cloudName, P);
+            FatalIOErrorInFunction(mpmProperties)
+                << "The time step " << dt << " s at t = "
+                << runTime.timeName() << " would need more steps to reach"
+                << " endTime " << runTime.endTime().value() << " than"
+                << " maxSteps " << solver.maxSteps() << " (entry 'maxSteps'"
+                << " in " << mpmProperties.name() << "): "
+                << solver.deltaTReason().c_str() << nl
+                << "    Check the materials' E and rho and the particle"
+                << " velocities. The state at t = " << runTime.timeName()
+                << " is written" << exit(FatalIOError);
+        }
+        // Never past endTime (a vanishing wave speed gives a huge dt)
+        if (remaining > 0) dt = min(dt, remaining);
         runTime.setDeltaT(dt);
         ++runTime;
         const scalar dtUsed = runTime.deltaTValue();
@@ -116,6 +151,14 @@ int main(int argc, char *argv[])
                 << runTime.timeName() << exit(FatalError);
         }
         ++steps;
+        if (!solver.energyBounded(P))
+        {
+            FatalErrorInFunction
+                << "Unstable at t = " << runTime.timeName() << ": "
+                << solver.failure().c_str() << nl
+                << "    The last good state written is at t = "
+                << lastWritten << exit(FatalError);
+        }
 
         if (runTime.timeIndex() % logInterval == 0 || runTime.writeTime())
         {
@@ -128,6 +171,7 @@ int main(int argc, char *argv[])
         if (runTime.writeTime())
         {
             mpmCloudIO::write(mesh, cloudName, P);
+            lastWritten = runTime.timeName();
             Info<< "    written, ExecutionTime = "
                 << runTime.elapsedCpuTime() << " s" << nl;
         }

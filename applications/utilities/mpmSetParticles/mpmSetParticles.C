@@ -43,9 +43,11 @@ Usage
             }
         );
     \endverbatim
-    A region whose particles would lie outside the mesh, an unknown
-    material or type, a spacing <= 0 or perCell < 1 stop with a FatalIOError
-    naming the entry.
+    A region whose particles would lie outside the mesh, a box whose max
+    is not above its min, an unknown material or type, a spacing <= 0 or
+    perCell < 1, a velocity with a component beyond 1e30 m/s, an F with a
+    component beyond 1e3 or det F outside [1e-6, 1e6], and regions that
+    seed no particle at all stop with a FatalIOError naming the entry.
 
 \*---------------------------------------------------------------------------*/
 
@@ -168,16 +170,42 @@ int main(int argc, char *argv[])
         switch (r.type)
         {
             case regionType::box:
-                r.lo = getAs<vector>(d, "min", "a point (x y z)");
-                r.hi = getAs<vector>(d, "max", "a point (x y z)");
+                for (const word k : {"min", "max"})
+                {
+                    if (!d.found(k, keyType::LITERAL))
+                    {
+                        missingEntry(d, k, "a point (x y z)");
+                    }
+                }
+                r.lo = getBoundedVector(d, "min", Zero, 1e30, "a point");
+                r.hi = getBoundedVector(d, "max", Zero, 1e30, "a point");
+                for (label a = 0; a < dim; ++a)
+                {
+                    const label k = view.axis(a);
+                    if (!(r.hi[k] > r.lo[k]))
+                    {
+                        OStringStream found;
+                        found << r.hi << " (min " << r.lo << ")";
+                        badEntry(d, "max", found.str(),
+                            "a point above min in each solved direction");
+                    }
+                }
                 break;
             case regionType::sphere:
             case regionType::cylinder:
-                r.centre = getAs<vector>(d, "centre", "a point (x y z)");
-                r.radius = getPositive(d, "radius", 1);
+                if (!d.found("centre", keyType::LITERAL))
+                {
+                    missingEntry(d, "centre", "a point (x y z)");
+                }
+                r.centre = getBoundedVector(d, "centre", Zero, 1e30, "a point");
+                r.radius = getInRange(d, "radius", 1, 0, 1e30);
                 if (r.type == regionType::cylinder)
                 {
-                    r.axis = getAs<vector>(d, "axis", "a direction (x y z)");
+                    if (!d.found("axis", keyType::LITERAL))
+                    {
+                        missingEntry(d, "axis", "a direction (x y z)");
+                    }
+                    r.axis = getBoundedVector(d, "axis", Zero, 1e30, "a direction");
                     if (mag(r.axis) < VSMALL)
                     {
                         badEntry(d, "axis", "(0 0 0)", "a non-zero direction");
@@ -234,17 +262,39 @@ int main(int argc, char *argv[])
             getAs<word>(d, "material", "a material of constant/mpmProperties"), d
         );
         const scalar rho = solver.materials()[mat].rho();
-        const vector U0 = getAsOrDefault<vector>(d, "velocity", Zero, "a vector");
-        const tensor F0 = getAsOrDefault<tensor>(d, "F", tensor(I), "a tensor (xx xy xz yx yy yz zx zy zz)");
-        if (!(det(F0) > 0))
+        // Bounds that keep the solver's products (m |v|^2, stresses,
+        // energies) finite
+        const vector U0 = getBoundedVector(d, "velocity", Zero, 1e30, "a velocity");
+        const string allowedF
+        (
+            "a deformation gradient (xx xy xz yx yy yz zx zy zz) with finite"
+            " components of magnitude <= 1e3 and 1e-6 <= det F <= 1e6"
+        );
+        const tensor F0 = getAsOrDefault<tensor>(d, "F", tensor(I), allowedF);
+        for (direction c = 0; c < tensor::nComponents; ++c)
         {
-            badEntry(d, "F", Foam::name(F0), "a deformation gradient with det F > 0");
+            if (!(mag(F0[c]) <= 1e3))
+            {
+                badEntry(d, "F", Foam::name(F0), allowedF);
+            }
+        }
+        if (!(det(F0) >= 1e-6 && det(F0) <= 1e6))
+        {
+            badEntry(d, "F", Foam::name(F0) + " (det F = "
+                + Foam::name(det(F0)) + ")", allowedF);
         }
         vector sineA(Zero), sineK(Zero);
         if (const dictionary* sd = d.findDict("velocitySine", keyType::LITERAL))
         {
-            sineA = getAs<vector>(*sd, "amplitude", "a vector");
-            sineK = getAs<vector>(*sd, "wavenumber", "a vector [1/m]");
+            for (const word k : {"amplitude", "wavenumber"})
+            {
+                if (!sd->found(k, keyType::LITERAL))
+                {
+                    missingEntry(*sd, k, "a vector (x y z)");
+                }
+            }
+            sineA = getBoundedVector(*sd, "amplitude", Zero, 1e30, "a velocity");
+            sineK = getBoundedVector(*sd, "wavenumber", Zero, 1e30, "a wavenumber [1/m]");
         }
         auto velocity = [&](const vector& x)
         {
@@ -266,6 +316,23 @@ int main(int argc, char *argv[])
         if (hasSpacing)
         {
             const scalar s = getPositive(d, "spacing", 1);
+            // More lattice points than a label holds, or than memory
+            // would take: stop before looping over them
+            {
+                scalar nTotal = 1;
+                const boundBox& mb = mesh.bounds();
+                for (label a = 0; a < dim; ++a)
+                {
+                    const label k = view.axis(a);
+                    nTotal *= min(mb.span()[k]/s, scalar(1e10)) + 1;
+                }
+                if (nTotal > 1e9)
+                {
+                    badEntry(d, "spacing", Foam::name(s),
+                        "a spacing that gives at most 1e9 lattice points"
+                        " over the mesh bounds");
+                }
+            }
             // Lattice over the region's bounds, clipped to the mesh bounds
             boundBox bb(mesh.bounds());
             if (r.type == regionType::box)
@@ -310,6 +377,12 @@ int main(int argc, char *argv[])
         else
         {
             const label N = getLabelAtLeast(d, "perCell", 1, 1);
+            if (std::pow(scalar(N), dim)*view.nCells() > 1e9)
+            {
+                badEntry(d, "perCell", Foam::name(N),
+                    "an integer >= 1 that gives at most 1e9 particles"
+                    " (perCell^dim times the number of cells)");
+            }
             mpmMeshView::shapeValues sv;
             for (label c = 0; c < view.nCells(); ++c)
             {
@@ -401,6 +474,15 @@ int main(int argc, char *argv[])
         Info<< "Region " << e.keyword() << ": " << P.size() - before
             << " particles of material "
             << solver.materials()[mat].name() << nl;
+    }
+
+    if (P.size() == 0)
+    {
+        FatalIOErrorInFunction(setDict)
+            << "Entry 'regions' in " << setDict.name() << " seeds no"
+            << " particle: every region is empty" << nl
+            << "    allowed: regions that hold at least one particle"
+            << exit(FatalIOError);
     }
 
     solver.initialise(P);

@@ -107,7 +107,7 @@ bool Foam::functionObjects::mpmConservation::execute()
             << t.angularMomentum.x() << '\t' << t.angularMomentum.y() << '\t'
             << t.angularMomentum.z() << '\t'
             << t.kinetic << '\t' << t.strain << '\t' << t.gravitational
-            << '\t' << total << nl;
+            << '\t' << total << endl;   // flushed: kept if the run stops
     }
     return true;
 }

@@ -151,7 +151,9 @@ bool Foam::functionObjects::mpmParticleProbe::execute()
                 << '\t' << s.xy() << '\t' << s.yz() << '\t' << s.xz()
                 << '\t' << det(P.F[p]);
         }
-        os  << nl;
+        // Flushed every line: a run stopped by a FatalError keeps its
+        // history up to the last step
+        os  << endl;
     }
     return true;
 }

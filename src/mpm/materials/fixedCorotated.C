@@ -90,4 +90,29 @@ void Foam::fixedCorotated::stress
 }
 
 
+Foam::scalar Foam::fixedCorotated::maxWaveSpeed
+(
+    const UList<tensor>& F,
+    const UList<symmTensor>& sigma
+) const
+{
+    // Kirchhoff stress tau_i = 2 mu (l_i - 1) l_i + lambda J (J - 1) per
+    // principal stretch l_i: d tau_i/d ln l_i = 2 mu (2 l_i^2 - l_i)
+    // + lambda J (2 J - 1), growing with J^2 when stretched
+    scalar K = 0;
+    forAll(F, p)
+    {
+        const scalar J = det(F[p]);
+        const scalar l2 = maxStretchSqr(F[p]);
+        K = max
+        (
+            K,
+            2*mu_*max(2*l2 - std::sqrt(l2), scalar(0))
+          + lambda_*J*mag(2*J - 1) + J*maxAbsEigen(sigma[p])
+        );
+    }
+    return std::sqrt(K/rho_);
+}
+
+
 // ************************************************************************* //

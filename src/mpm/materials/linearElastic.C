@@ -6,6 +6,8 @@
 #include "linearElastic.H"
 #include "addToRunTimeSelectionTable.H"
 
+#include <cmath>
+
 namespace Foam
 {
     defineTypeNameAndDebug(linearElastic, 0);
@@ -35,6 +37,30 @@ void Foam::linearElastic::stress
         sigma[p] = lambda*trEps*symmTensor::I + 2*mu*eps;
         energyDensity[p] = mu*(eps && eps) + 0.5*lambda*trEps*trEps;
     }
+}
+
+
+Foam::scalar Foam::linearElastic::maxWaveSpeed
+(
+    const UList<tensor>& F,
+    const UList<symmTensor>& sigma
+) const
+{
+    // The stress increment of a velocity gradient L over dt is
+    // (lambda + 2 mu) symm(L F) dt, acting on the current volume J V0: the
+    // Kirchhoff modulus J sqrt(max stretch^2) (lambda + 2 mu)
+    const scalar M = lambda_ + 2*mu_;
+    scalar K = 0;
+    forAll(F, p)
+    {
+        const scalar J = det(F[p]);
+        K = max
+        (
+            K,
+            J*(std::sqrt(maxStretchSqr(F[p]))*M + maxAbsEigen(sigma[p]))
+        );
+    }
+    return std::sqrt(K/rho_);
 }
 
 

@@ -18,8 +18,8 @@ namespace Foam
 Foam::mpmMaterial::mpmMaterial(const word& name, const dictionary& dict)
 :
     name_(name),
-    rho_(dictionaryChecks::getPositive(dict, "rho")),
-    E_(dictionaryChecks::getPositive(dict, "E")),
+    rho_(dictionaryChecks::getInRange(dict, "rho", 1e-30, 1e30)),
+    E_(dictionaryChecks::getInRange(dict, "E", 0, 1e30)),
     nu_(0),
     lambda_(0),
     mu_(0)

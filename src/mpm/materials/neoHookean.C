@@ -62,4 +62,26 @@ void Foam::neoHookean::stress
 }
 
 
+Foam::scalar Foam::neoHookean::maxWaveSpeed
+(
+    const UList<tensor>& F,
+    const UList<symmTensor>& sigma
+) const
+{
+    // Kirchhoff stress tau_i = mu (l_i^2 - 1) + lambda ln J per principal
+    // stretch l_i: d tau_i/d ln l_i = 2 mu l_i^2 + lambda
+    scalar K = 0;
+    forAll(F, p)
+    {
+        const scalar J = det(F[p]);
+        K = max
+        (
+            K,
+            2*mu_*maxStretchSqr(F[p]) + lambda_ + J*maxAbsEigen(sigma[p])
+        );
+    }
+    return std::sqrt(K/rho_);
+}
+
+
 // ************************************************************************* //

@@ -23,6 +23,7 @@ void Foam::mpmSolver::readSettings(const dictionary& dict)
         badEntry(dict, "CFL", Foam::name(CFL_), "a number 0 < CFL <= 1");
     }
     maxDeltaT_ = getPositive(dict, "maxDeltaT", 1e30);
+    maxSteps_ = getInRange(dict, "maxSteps", 1e9, 0, 1e15);
 
     // USL by default (Algorithm 1); MUSL for the linear kernel, whose
     // vertices at a free surface can hold a vanishing mass
@@ -75,6 +76,24 @@ void Foam::mpmSolver::updateStress(mpmParticles& P) const
 }
 
 
+Foam::scalar Foam::mpmSolver::mechanicalEnergy
+(
+    const mpmParticles& P,
+    scalar& motion
+) const
+{
+    scalar kinetic = 0, strain = 0, grav = 0;
+    forAll(P.x, p)
+    {
+        kinetic += 0.5*P.m[p]*magSqr(P.v[p]);
+        strain += P.V0[p]*P.psi[p];
+        grav -= P.m[p]*(gravity_ & P.x[p]);
+    }
+    motion = kinetic + strain;
+    return motion + grav;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
 
 Foam::mpmSolver::mpmSolver
@@ -91,9 +110,15 @@ Foam::mpmSolver::mpmSolver
     gravity_(Zero),
     CFL_(0.5),
     maxDeltaT_(1e30),
+    maxSteps_(1e9),
     musl_(false),
     hMin_(*std::min_element(mesh.vertexSize().begin(), mesh.vertexSize().end())),
-    grid_(mesh.nVertices())
+    grid_(mesh.nVertices()),
+    cLast_(0),
+    cMaterial_(-1),
+    vLast_(0),
+    energy0_(0),
+    energyGrowthBound_(0)
 {
     readSettings(dict);
 }
@@ -125,6 +150,26 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
     materialStart_ = P.sortByMaterial(materials_.size());
     forAll(P.x, p)
     {
+        // A cloud edited by hand or written by a broken run: values
+        // beyond 1e30 overflow the energies (m |v|^2) and stresses
+        const scalar big = 1e30;
+        const char* bad = nullptr;
+        if (!(cmptMax(cmptMag(P.x[p])) <= big)) bad = "position";
+        else if (!(cmptMax(cmptMag(P.v[p])) <= big)) bad = "U";
+        else if (!(cmptMax(cmptMag(P.F[p])) <= big)) bad = "F";
+        else if (!(cmptMax(cmptMag(P.B[p])) <= big)) bad = "B";
+        else if (!(P.m[p] > 0 && P.m[p] <= big)) bad = "mass";
+        else if (!(P.V0[p] > 0 && P.V0[p] <= big)) bad = "V0";
+        else if (!(det(P.F[p]) > 0)) bad = "F (det F <= 0)";
+        if (bad)
+        {
+            FatalErrorInFunction
+                << "Particle " << p << " of the MPM cloud has a non-finite,"
+                << " out-of-range (beyond 1e30) or non-physical " << bad
+                << ": x " << P.x[p] << ", U " << P.v[p] << ", F " << P.F[p]
+                << ", mass " << P.m[p] << ", V0 " << P.V0[p]
+                << exit(FatalError);
+        }
         const label c = mesh_.findCell(P.x[p], P.cell[p]);
         if (c < 0)
         {
@@ -136,6 +181,26 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
         P.V[p] = det(P.F[p])*P.V0[p];
     }
     updateStress(P);
+
+    // The energy bound: the energy in motion at the start plus what
+    // gravity can release over the mesh's extent along g
+    scalar motion = 0;
+    energy0_ = mechanicalEnergy(P, motion);
+    scalar release = 0;
+    if (magSqr(gravity_) > 0)
+    {
+        const vector gHat = gravity_/mag(gravity_);
+        scalar lo = GREAT, hi = -GREAT;
+        for (const vector& xv : mesh_.vertices())
+        {
+            lo = min(lo, gHat & xv);
+            hi = max(hi, gHat & xv);
+        }
+        scalar mass = 0;
+        for (const scalar m : P.m) mass += m;
+        release = mass*mag(gravity_)*(hi - lo);
+    }
+    energyGrowthBound_ = motion + release;
 
     // Particles in cells touching the mesh boundary have one-sided 1-rings:
     // MLS weights can turn negative there (Fig. 2.6)
@@ -167,18 +232,82 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
 
 Foam::scalar Foam::mpmSolver::deltaT(const mpmParticles& P) const
 {
+    // A deformed state's estimate counts where it exceeds the reference
+    // speed by more than this factor: small strains keep the reference
+    // speed (and the results of the reference-speed step)
+    const scalar deformedMargin = 1.5;
+
     scalar cMax = 0;
+    cMaterial_ = -1;
     forAll(materials_, k)
     {
-        if (materialStart_[k + 1] > materialStart_[k])
+        const label b = materialStart_[k];
+        const label n = materialStart_[k + 1] - b;
+        if (n == 0) continue;
+        const mpmMaterial& mat = materials_[k];
+        const scalar c = max
+        (
+            mat.waveSpeed(),
+            mat.maxWaveSpeed
+            (
+                SubList<tensor>(P.F, n, b), SubList<symmTensor>(P.sigma, n, b)
+            )/deformedMargin
+        );
+        if (c > cMax || cMaterial_ < 0)
         {
-            cMax = max(cMax, materials_[k].waveSpeed());
+            cMax = c;
+            cMaterial_ = k;
         }
     }
     scalar vMax2 = 0;
     for (const vector& v : P.v) vMax2 = max(vMax2, magSqr(v));
-    const scalar speed = cMax + std::sqrt(vMax2);
+    cLast_ = cMax;
+    vLast_ = std::sqrt(vMax2);
+    const scalar speed = cMax + vLast_;
     return min(maxDeltaT_, speed > 0 ? CFL_*hMin_/speed : maxDeltaT_);
+}
+
+
+Foam::string Foam::mpmSolver::deltaTReason() const
+{
+    OStringStream os;
+    os  << "dt = CFL h_min/(c + |v|max) with CFL " << CFL_ << ", h_min "
+        << hMin_ << " m, c = " << cLast_ << " m/s";
+    if (cMaterial_ >= 0)
+    {
+        const mpmMaterial& mat = materials_[cMaterial_];
+        os  << " (material " << mat.name() << ": E " << mat.E() << ", nu "
+            << mat.nu() << ", rho " << mat.rho() << "; reference speed "
+            << mat.waveSpeed() << " m/s)";
+    }
+    os  << ", |v|max = " << vLast_ << " m/s";
+    if (maxDeltaT_ < 1e30) os << ", maxDeltaT " << maxDeltaT_;
+    return os.str();
+}
+
+
+bool Foam::mpmSolver::energyBounded(const mpmParticles& P)
+{
+    scalar motion = 0;
+    const scalar E = mechanicalEnergy(P, motion);
+    const scalar growth = E - energy0_;
+    if
+    (
+        std::isfinite(E)
+     && (energyGrowthBound_ <= 0 || growth <= energyGrowthBound_)
+    )
+    {
+        return true;
+    }
+    OStringStream os;
+    os  << "the mechanical energy (kinetic + strain + gravitational) grew"
+        << " from " << energy0_ << " to " << E << ", by more than the "
+        << energyGrowthBound_ << " the system can hold: the discretisation"
+        << " is unstable (" << deltaTReason().c_str() << "). A lower CFL"
+        << " (above the kernel's limit?) or the FLIP/PIC transfer (APIC"
+        << " at extreme deformation?) may keep it bounded";
+    failure_ = os.str();
+    return false;
 }
 
 
