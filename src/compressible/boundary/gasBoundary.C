@@ -5,6 +5,7 @@
 
 #include "gasBoundary.H"
 #include "dictionaryChecks.H"
+#include "gasLimits.H"
 
 using namespace Foam::dictionaryChecks;
 
@@ -23,10 +24,29 @@ Foam::gasBoundary::primitiveState Foam::gasBoundary::readState
     const primitiveState& deflt
 )
 {
+    // Each value finite and in range (gasLimits.H), whether given here or
+    // taken from the initial fields (which gasDynamics has checked)
     primitiveState s(deflt);
-    s.rho = getPositive(dict, "rho", deflt.rho);
-    s.U = getAsOrDefault<vector>(dict, "U", deflt.U, "a vector (ux uy uz)");
-    s.p = getPositive(dict, "p", deflt.p);
+    const string allowedRange("a finite number > 0 " + gasLimits::rangeText());
+    s.rho = getAsOrDefault<scalar>(dict, "rho", deflt.rho, allowedRange);
+    if (!gasLimits::inRange(s.rho))
+    {
+        badEntry(dict, "rho", Foam::name(s.rho), allowedRange);
+    }
+    const string allowedU
+    (
+        "a vector (ux uy uz) with |U| <= " + Foam::name(gasLimits::maxValue)
+    );
+    s.U = getAsOrDefault<vector>(dict, "U", deflt.U, allowedU);
+    if (!gasLimits::velocityOk(s.U))
+    {
+        badEntry(dict, "U", entryText(dict, "U"), allowedU);
+    }
+    s.p = getAsOrDefault<scalar>(dict, "p", deflt.p, allowedRange);
+    if (!gasLimits::inRange(s.p))
+    {
+        badEntry(dict, "p", Foam::name(s.p), allowedRange);
+    }
     return s;
 }
 

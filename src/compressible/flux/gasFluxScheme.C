@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "gasFluxScheme.H"
+#include "vector.H"           // before dictionaryChecks.H, which uses it
 #include "dictionaryChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //

@@ -6,8 +6,35 @@
 #include "idealGas.H"
 #include "dictionaryChecks.H"
 #include "thermodynamicConstants.H"
+#include "gasLimits.H"
 
 using namespace Foam::dictionaryChecks;
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// gamma - 1 >= 1e-6 keeps p/(gamma - 1) representable; gamma <= 100 keeps
+// the sound speed, and so the time step, of states in range reasonable
+inline bool gammaOk(const Foam::scalar g)
+{
+    return std::isfinite(g) && g >= Foam::gasLimits::minGamma
+        && g <= Foam::gasLimits::maxGamma;
+}
+
+inline Foam::string gammaAllowed()
+{
+    return "a number > 1 (1 + 1e-06 <= gamma <= 100)";
+}
+
+inline Foam::string RAllowed()
+{
+    return "a number > 0 " + Foam::gasLimits::rangeText();
+}
+
+} // End anonymous namespace
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -26,15 +53,15 @@ Foam::idealGas::idealGas(const dictionary& dict)
     const bool direct = dict.found("gamma") || dict.found("R");
     if (direct)
     {
-        gamma_ = getAs<scalar>(dict, "gamma", "a number > 1");
-        R_ = getAs<scalar>(dict, "R", "a number > 0");
-        if (!(gamma_ > 1) || !std::isfinite(gamma_))
+        gamma_ = getAs<scalar>(dict, "gamma", gammaAllowed());
+        R_ = getAs<scalar>(dict, "R", RAllowed());
+        if (!gammaOk(gamma_))
         {
-            badEntry(dict, "gamma", Foam::name(gamma_), "a number > 1");
+            badEntry(dict, "gamma", Foam::name(gamma_), gammaAllowed());
         }
-        if (!(R_ > 0) || !std::isfinite(R_))
+        if (!gasLimits::inRange(R_))
         {
-            badEntry(dict, "R", Foam::name(R_), "a number > 0");
+            badEntry(dict, "R", Foam::name(R_), RAllowed());
         }
         return;
     }
@@ -64,6 +91,15 @@ Foam::idealGas::idealGas(const dictionary& dict)
 
     const scalar W = getPositive(spec, "molWeight");
     R_ = constant::thermodynamic::RR/W;
+    if (!gasLimits::inRange(R_))
+    {
+        badEntry
+        (
+            spec, "molWeight", Foam::name(W),
+            "a molWeight that gives R = RR/molWeight "
+          + gasLimits::rangeText() + " (here R = " + Foam::name(R_) + ")"
+        );
+    }
 
     scalar cv = 0;
     if (thermo.found("Cp"))
@@ -87,6 +123,20 @@ Foam::idealGas::idealGas(const dictionary& dict)
         cv = getPositive(thermo, "Cv");
     }
     gamma_ = (cv + R_)/cv;
+    if (!gammaOk(gamma_))
+    {
+        // Cp (or Cv) so large against R that gamma rounds to 1, or so
+        // close to R that gamma is huge: name the entry and both inputs
+        const word key(thermo.found("Cp") ? "Cp" : "Cv");
+        badEntry
+        (
+            thermo, key, entryText(thermo, key),
+            "with molWeight " + Foam::name(W) + " (R = RR/molWeight = "
+          + Foam::name(R_) + "): a value that gives gamma = "
+          + (key == "Cp" ? "Cp/(Cp - R)" : "(Cv + R)/Cv") + " "
+          + gammaAllowed() + "; here gamma = " + Foam::name(gamma_)
+        );
+    }
 }
 
 

@@ -6,6 +6,8 @@
 #include "gasDynamics.H"
 #include "dictionaryChecks.H"
 #include "fvc.H"
+#include "gasLimits.H"
+#include "OStringStream.H"
 
 using namespace Foam::dictionaryChecks;
 
@@ -25,6 +27,58 @@ Foam::scalar Foam::gasDynamics::timeToNextWrite() const
     const scalar rel = (rt.value() - t0)/wi;
     const scalar next = (std::floor(rel + 1e-9) + 1)*wi + t0;
     return next - rt.value();
+}
+
+
+Foam::scalar Foam::gasDynamics::minDeltaT() const
+{
+    const Time& rt = mesh_.time();
+    return gasLimits::minDeltaTFraction
+       *(rt.endTime().value() - rt.startTime().value());
+}
+
+
+Foam::string Foam::gasDynamics::fastestCell() const
+{
+    const scalar g = gas_.gamma();
+    scalar best = -1;
+    label bi = -1;
+    for (const label i : view_.latticeOf())
+    {
+        const double rho = U_.q[0][i];
+        const double p = gas_.pressure
+        (
+            rho, U_.q[1][i], U_.q[2][i], U_.q[3][i], U_.q[4][i]
+        );
+        const double c = std::sqrt(std::abs(g*p/rho));
+        double r = 0;
+        for (label d = 0; d < 3; ++d)
+        {
+            if (view_.active(d))
+            {
+                r += (std::abs(U_.q[1 + d][i]/rho) + c)/view_.dx(d);
+            }
+        }
+        if (r > best)
+        {
+            best = r;
+            bi = i;
+        }
+    }
+    if (bi < 0) return "none";
+    const label celli = view_.cellAt()[bi];
+    const double rho = U_.q[0][bi];
+    const vector u(U_.q[1][bi]/rho, U_.q[2][bi]/rho, U_.q[3][bi]/rho);
+    const double p = gas_.pressure
+    (
+        rho, U_.q[1][bi], U_.q[2][bi], U_.q[3][bi], U_.q[4][bi]
+    );
+    OStringStream os;
+    os  << "cell " << celli << " at " << mesh_.cellCentres()[celli]
+        << ": rho " << rho << ", U " << u << ", p " << p
+        << ", sound speed " << std::sqrt(std::abs(g*p/rho))
+        << ", cell size " << vector(view_.dx(0), view_.dx(1), view_.dx(2));
+    return os.str();
 }
 
 
@@ -99,6 +153,8 @@ Foam::gasDynamics::gasDynamics(const fvMesh& mesh)
     nSteps_(0),
     nFallback_(0),
     nRetries_(0),
+    nExplicitFallback_(0),
+    nExplicitSubsteps_(0),
     cgTotal_(0),
     nCornerCells_(0),
     cornerMass_(0),
@@ -218,9 +274,35 @@ Foam::gasDynamics::gasDynamics(const fvMesh& mesh)
     toFields();
     updateDerived();
 
-    word limiter;
-    scalar speed;
-    stepper_->stableDeltaT(U_, CFL_, speed, limiter);
+    // A stable step that small would take more than 1e12 steps: stop now,
+    // naming what sets it, instead of running without end
+    if (maxDeltaT_ < minDeltaT())
+    {
+        badEntry
+        (
+            gasDict, "maxDeltaT", Foam::name(maxDeltaT_),
+            "a number >= 1e-12 (endTime - startTime) = "
+          + Foam::name(minDeltaT()) + " (endTime "
+          + Foam::name(mesh.time().endTime().value()) + ", startTime "
+          + Foam::name(mesh.time().startTime().value())
+          + "): a smaller step would need more than 1e12 steps"
+        );
+    }
+    const scalar dt0 = stableDeltaT();
+    if (!(dt0 >= minDeltaT()))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "The initial state's stable time step " << dt0
+            << " (CFL " << CFL_ << ") is below 1e-12 of the time span"
+            << " endTime - startTime = "
+            << mesh.time().endTime().value() - mesh.time().startTime().value()
+            << ": the run would take more than 1e12 steps." << nl
+            << "    The fastest waves: " << fastestCell().c_str() << nl
+            << "    allowed: CFL, maxDeltaT, gamma and initial fields"
+            << " (internalField of p, U and rho or T) whose stable time step"
+            << " is >= " << minDeltaT() << exit(FatalIOError);
+    }
+
     Info<< "Gas solver: stepper " << gasDict.get<word>("stepper")
         << ", scheme " << gasDict.get<word>("scheme")
         << ", " << gasStepper::rkOrderNames
@@ -258,6 +340,23 @@ void Foam::gasDynamics::step(Time& runTime)
     scalar speed = 0;
     scalar dt = stepper_->stableDeltaT(U_, CFL_, speed, limiter);
     dt = min(dt, maxDeltaT_);
+    if (!(dt >= minDeltaT()))
+    {
+        // The waves got so fast that the run would not end: stop cleanly
+        toFields();
+        updateDerived();
+        runTime.writeNow();
+        FatalErrorInFunction
+            << "The stable time step " << dt << " at time "
+            << runTime.timeName() << " (CFL " << CFL_ << ", limited by "
+            << limiter.c_str() << ", max speed " << speed << ") is below"
+            << " 1e-12 of the time span endTime - startTime = "
+            << runTime.endTime().value() - runTime.startTime().value()
+            << ": the run would not end." << nl
+            << "    The fastest waves: " << fastestCell().c_str() << nl
+            << "    The last good state is written at time "
+            << runTime.timeName() << exit(FatalError);
+    }
 
     // Land on write times and the end time without exceeding the CFL step
     const scalar toWrite = timeToNextWrite();
@@ -284,8 +383,16 @@ void Foam::gasDynamics::step(Time& runTime)
                 << "The gas state failed in the step from time "
                 << runTime.timeName() << " (dt " << dt << ", after "
                 << tries << " halvings): " << rep.failure.c_str() << nl
-                << "    in cell " << celli << " at " << mesh_.cellCentres()[celli]
-                << nl << "    The last good state is written at time "
+                << "    in cell " << celli << " at "
+                << mesh_.cellCentres()[celli] << nl;
+            if (rep.explicitFallbacks > 0)
+            {
+                FatalError
+                    << "    (an explicit fallback step, after: "
+                    << rep.fallbackReason.c_str() << ")" << nl;
+            }
+            FatalError
+                << "    The last good state is written at time "
                 << runTime.timeName() << exit(FatalError);
         }
         ++tries;
@@ -307,6 +414,8 @@ void Foam::gasDynamics::step(Time& runTime)
     ++nSteps_;
     nFallback_ += rep.fallbackCells;
     cgTotal_ += rep.cgIterations;
+    nExplicitFallback_ += rep.explicitFallbacks;
+    nExplicitSubsteps_ += rep.explicitSubsteps;
 
     Info<< "Step " << runTime.timeIndex() << "  Time = " << runTime.timeName()
         << "  dt = " << dt << "  maxSpeed = " << speed << " (" << limiter
@@ -318,6 +427,11 @@ void Foam::gasDynamics::step(Time& runTime)
     if (rep.fallbackCells > 0)
     {
         Info<< "  firstOrderCells = " << rep.fallbackCells;
+    }
+    if (rep.explicitFallbacks > 0)
+    {
+        Info<< "  explicitFallback = " << rep.explicitSubsteps
+            << " substeps (" << rep.fallbackReason.c_str() << ")";
     }
     Info<< nl;
 
@@ -347,7 +461,13 @@ void Foam::gasDynamics::summary() const
             << scalar(cgTotal_)/max(nSteps_, label(1)) << " per step)";
     }
     Info<< ", first-order fallback cells " << nFallback_
-        << ", halved steps " << nRetries_ << nl;
+        << ", halved steps " << nRetries_;
+    if (nExplicitFallback_ > 0)
+    {
+        Info<< ", explicit fallback steps " << nExplicitFallback_ << " ("
+            << nExplicitSubsteps_ << " acoustic sub-steps)";
+    }
+    Info<< nl;
     if (corners_->type() == wallCorners::treatment::entropyReset)
     {
         Info<< "Corner entropy resets: " << nCornerCells_ << " cells; mass "

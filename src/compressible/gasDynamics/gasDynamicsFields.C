@@ -10,6 +10,7 @@ Description
 
 #include "gasDynamics.H"
 #include "fvc.H"
+#include "gasLimits.H"
 
 // * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
 
@@ -50,30 +51,64 @@ Foam::IOobject Foam::gasDynamics::newIO
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+void Foam::gasDynamics::checkField
+(
+    const volScalarField& f,
+    const word& what
+) const
+{
+    auto stop = [&](const word& where, label i, scalar v, const point& x)
+    {
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__, f.objectPath(), -1
+        )   << where.c_str() << " of " << f.objectPath() << " has the value "
+            << v << (where == "internalField" ? " in cell " : " at face ")
+            << i << " at " << x << nl
+            << "    allowed: a finite " << what.c_str() << " > 0, "
+            << gasLimits::rangeText().c_str() << exit(FatalIOError);
+    };
+    forAll(f, celli)
+    {
+        if (!gasLimits::inRange(f[celli]))
+        {
+            stop("internalField", celli, f[celli], mesh_.cellCentres()[celli]);
+        }
+    }
+    forAll(f.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& pf = f.boundaryField()[patchi];
+        forAll(pf, facei)
+        {
+            if (!gasLimits::inRange(pf[facei]))
+            {
+                stop
+                (
+                    "boundaryField/" + pf.patch().name() + " value", facei,
+                    pf[facei], pf.patch().Cf()[facei]
+                );
+            }
+        }
+    }
+}
+
+
 Foam::tmp<Foam::volScalarField> Foam::gasDynamics::readDensity() const
 {
+    // p first: rho = p/(R T) of values out of range would overflow
+    checkField(p_, "pressure");
+
     IOobject rhoIO(readIO(mesh_, "rho"));
     if (rhoIO.typeHeaderOk<volScalarField>(true))
     {
         Info<< "Reading rho" << nl;
-        return tmp<volScalarField>::New(rhoIO, mesh_);
+        auto trho = tmp<volScalarField>::New(rhoIO, mesh_);
+        checkField(trho(), "density");
+        return trho;
     }
     Info<< "Reading T (rho = p/(R T))" << nl;
     volScalarField T(readIO(mesh_, "T"), mesh_);
-    forAll(T, celli)
-    {
-        if (!(T[celli] > 0) || !std::isfinite(T[celli]))
-        {
-            FatalIOError
-            (
-                FUNCTION_NAME, __FILE__, __LINE__, T.objectPath(), -1
-            )   << "internalField of " << T.objectPath() << " has the value "
-                << T[celli] << " in cell " << celli << " at "
-                << mesh_.cellCentres()[celli] << nl
-                << "    allowed: a finite temperature > 0"
-                << exit(FatalIOError);
-        }
-    }
+    checkField(T, "temperature");
     auto trho = tmp<volScalarField>::New
     (
         newIO(mesh_, "rho", true),
@@ -87,40 +122,99 @@ Foam::tmp<Foam::volScalarField> Foam::gasDynamics::readDensity() const
         rho.boundaryFieldRef()[patchi] ==
             p_.boundaryField()[patchi]/(gas_.R()*T.boundaryField()[patchi]);
     }
+
+    // The density p/(R T) must be in range too: name T, the field given
+    forAll(rho, celli)
+    {
+        if (!gasLimits::inRange(rho[celli]))
+        {
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__, T.objectPath(), -1
+            )   << "internalField of " << T.objectPath() << " has the value "
+                << T[celli] << " in cell " << celli << " at "
+                << mesh_.cellCentres()[celli] << ": with p " << p_[celli]
+                << " and R " << gas_.R() << " the density p/(R T) is "
+                << rho[celli] << nl
+                << "    allowed: a finite temperature > 0 that gives a"
+                << " density " << gasLimits::rangeText().c_str()
+                << exit(FatalIOError);
+        }
+    }
+    forAll(rho.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& rb = rho.boundaryField()[patchi];
+        forAll(rb, facei)
+        {
+            if (!gasLimits::inRange(rb[facei]))
+            {
+                FatalIOError
+                (
+                    FUNCTION_NAME, __FILE__, __LINE__, T.objectPath(), -1
+                )   << "boundaryField/" << rb.patch().name() << " value of "
+                    << T.objectPath() << " has the value "
+                    << T.boundaryField()[patchi][facei] << " at face "
+                    << facei << ": the density p/(R T) there is "
+                    << rb[facei] << nl
+                    << "    allowed: a finite temperature > 0 that gives a"
+                    << " density " << gasLimits::rangeText().c_str()
+                    << exit(FatalIOError);
+            }
+        }
+    }
     return trho;
 }
 
 
 void Foam::gasDynamics::checkInitial() const
 {
-    auto check = [&](const volScalarField& f, const char* what)
+    // p and rho (or T) are checked as they are read (readDensity); here the
+    // velocity and what the three give together
+    auto checkU = [&](const vector& u, const word& where, label i)
     {
-        forAll(f, celli)
-        {
-            if (!(f[celli] > 0) || !std::isfinite(f[celli]))
-            {
-                FatalIOError
-                (
-                    FUNCTION_NAME, __FILE__, __LINE__, f.objectPath(), -1
-                )   << "internalField of " << f.objectPath()
-                    << " has the value " << f[celli] << " in cell "
-                    << celli << " at " << mesh_.cellCentres()[celli] << nl
-                    << "    allowed: a finite " << what << " > 0"
-                    << exit(FatalIOError);
-            }
-        }
-    };
-    check(p_, "pressure");
-    check(rho_, "density");
-    forAll(Uf_, celli)
-    {
-        if (!std::isfinite(mag(Uf_[celli])))
+        if (!gasLimits::velocityOk(u))
         {
             FatalIOError
             (
                 FUNCTION_NAME, __FILE__, __LINE__, Uf_.objectPath(), -1
-            )   << "internalField of " << Uf_.objectPath() << " is not finite"
-                << " in cell " << celli << exit(FatalIOError);
+            )   << where.c_str() << " of " << Uf_.objectPath()
+                << " has the value " << u
+                << (where == "internalField" ? " in cell " : " at face ")
+                << i << nl << "    allowed: a finite velocity with |U| <= "
+                << gasLimits::maxValue << exit(FatalIOError);
+        }
+    };
+    forAll(Uf_, celli)
+    {
+        checkU(Uf_[celli], "internalField", celli);
+    }
+    forAll(Uf_.boundaryField(), patchi)
+    {
+        const fvPatchVectorField& ub = Uf_.boundaryField()[patchi];
+        forAll(ub, facei)
+        {
+            checkU
+            (
+                ub[facei], "boundaryField/" + ub.patch().name() + " value",
+                facei
+            );
+        }
+    }
+    forAll(rho_, celli)
+    {
+        const string why = gasLimits::checkState
+        (
+            rho_[celli], Uf_[celli], p_[celli], gas_.gamma()
+        );
+        if (!why.empty())
+        {
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__, p_.objectPath(), -1
+            )   << "The initial state (internalField of p, U and rho or T)"
+                << " in cell " << celli << " at "
+                << mesh_.cellCentres()[celli] << ": " << why.c_str()
+                << exit(FatalIOError);
         }
     }
 }

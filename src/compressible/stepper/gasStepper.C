@@ -140,9 +140,8 @@ bool Foam::gasStepper::stage
     {
         rep.failedCell = bad.front();
         rep.failure =
-            advective
-          ? "non-positive density or pressure after the advection"
-          : "non-positive density or pressure";
+            (advective ? "after the advection: " : "")
+          + out.whyInadmissible(bad.front(), gamma_);
         return false;
     }
     return true;

@@ -27,8 +27,18 @@ Foam::gasSteppers::semiImplicitStepper::semiImplicitStepper
 :
     gasStepper(dict, op),
     tol_(dictionaryChecks::getPositive(dict, "CGtolerance", 1e-10)),
-    maxIter_(dictionaryChecks::getLabelAtLeast(dict, "CGmaxIter", 1000, 1))
+    maxIter_(dictionaryChecks::getLabelAtLeast(dict, "CGmaxIter", 1000, 1)),
+    CFL_(dictionaryChecks::getPositive(dict, "CFL", 0.5))
 {
+    // A step whose relative residual stays above 1e-3 is rejected (below),
+    // so a looser tolerance could never give an accepted step
+    if (tol_ > 1e-3)
+    {
+        dictionaryChecks::badEntry
+        (
+            dict, "CGtolerance", Foam::name(tol_), "a number in (0, 1e-3]"
+        );
+    }
     Ustar_.resize(mesh_.nLattice());
     unknownOf_.assign(mesh_.nLattice(), -1);
     for (size_t k = 0; k < cells_.size(); ++k)
@@ -202,11 +212,12 @@ bool Foam::gasSteppers::semiImplicitStepper::advance
     rep.cgIterations = sys_.solve(p_, tol_, maxIter_, rep.cgResidual);
     if (!std::isfinite(rep.cgResidual) || rep.cgResidual > 1e-3)
     {
-        rep.failedCell = cells_.front();
-        rep.failure =
+        ++rep.explicitFallbacks;
+        rep.fallbackReason =
             "the pressure system did not converge (relative residual "
-          + Foam::name(rep.cgResidual) + ")";
-        return false;
+          + Foam::name(rep.cgResidual) + " after "
+          + std::to_string(rep.cgIterations) + " CG iterations)";
+        return explicitFallback(U, dt, out, rep);
     }
 
     // 4. (3.21) face velocities and pressures, then the flux-form updates
@@ -262,12 +273,49 @@ bool Foam::gasSteppers::semiImplicitStepper::advance
     {
         if (!out.admissible(i, gamma_))
         {
-            rep.failedCell = i;
-            rep.failure = "non-positive pressure after the pressure step";
-            return false;
+            // Halving dt does not help here: at a jump of pressure the
+            // kinetic energy the pressure step gives a cell and the work it
+            // does on it both scale with dt^2, so their ratio does not
+            // change.  Take the step with the explicit scheme instead.
+            ++rep.explicitFallbacks;
+            rep.fallbackReason =
+                out.whyInadmissible(i, gamma_) + " in cell "
+              + std::to_string(mesh_.cellAt()[i]);
+            return explicitFallback(U, dt, out, rep);
         }
     }
     return true;
+}
+
+
+bool Foam::gasSteppers::semiImplicitStepper::explicitFallback
+(
+    const gasState& U,
+    scalar dt,
+    gasState& out,
+    report& rep
+)
+{
+    // Sub-steps of at most the acoustic CFL step that end exactly at dt,
+    // each recomputed from the current state (the waves speed up)
+    for (int c = 0; c < 5; ++c) Ustar_.q[c] = U.q[c];
+    scalar left = dt;
+    while (true)
+    {
+        scalar speed = 0;
+        const scalar rate = acousticRate(Ustar_, speed);
+        const scalar hMax = rate > 0 ? CFL_/rate : left;
+        const scalar n = std::max(std::ceil(left/hMax - 1e-9), scalar(1));
+        const scalar h = left/n;
+        ++rep.explicitSubsteps;
+        if (!rungeKutta(Ustar_, h, false, out, rep))
+        {
+            return false;
+        }
+        if (n <= 1) return true;
+        left -= h;
+        std::swap(Ustar_, out);
+    }
 }
 
 
