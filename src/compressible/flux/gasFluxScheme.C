@@ -4,7 +4,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "gasFluxScheme.H"
-#include "vector.H"           // before dictionaryChecks.H, which uses it
 #include "dictionaryChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
