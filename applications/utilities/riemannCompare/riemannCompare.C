@@ -55,8 +55,10 @@ Usage
         right     | the same for x > x0                  | yes |
         direction | the tube's axis: x                   | no  | x
     \endtable
-    Bad or missing entries, and states whose solution has a vacuum, stop
-    with a FatalIOError naming the file and the entry.  Serial only.
+    Bad or missing entries (rho and p must be in [1e-20, 1e20], |U| <=
+    1e20, as shockMpmFoam's input: gasLimits.H), and states whose solution
+    has a vacuum, stop with a FatalIOError naming the file and the entry.
+    Serial only.
 
 \*---------------------------------------------------------------------------*/
 
@@ -73,6 +75,7 @@ Usage
 #include "dictionaryChecks.H"
 #include "exactRiemannSolver.H"
 #include "idealGas.H"
+#include "gasLimits.H"
 
 #include <cstdio>
 #include <stdexcept>
@@ -104,15 +107,30 @@ exactRiemannSolver::state readState(const dictionary& dict, const word& key)
         missingEntry(dict, key, allowed);
     }
 
+    // The solver's input range (gasLimits.H): beyond it the exact solver's
+    // wave speeds and sampled energies overflow
+    const string inRange("a finite number > 0 " + gasLimits::rangeText());
+    const string uAllowed
+    (
+        "a finite number (the x velocity [m/s]) with |U| <= "
+      + Foam::name(gasLimits::maxValue)
+    );
     exactRiemannSolver::state s;
-    s.rho = getPositive(*sd, "rho");
-    s.u = getAs<scalar>(*sd, "U", "a finite number (the x velocity [m/s])");
-    if (!std::isfinite(s.u))
+    s.rho = getAs<scalar>(*sd, "rho", inRange);
+    if (!gasLimits::inRange(s.rho))
     {
-        badEntry(*sd, "U", Foam::name(s.u),
-            "a finite number (the x velocity [m/s])");
+        badEntry(*sd, "rho", Foam::name(s.rho), inRange);
     }
-    s.p = getPositive(*sd, "p");
+    s.u = getAs<scalar>(*sd, "U", uAllowed);
+    if (!(std::abs(s.u) <= gasLimits::maxValue))
+    {
+        badEntry(*sd, "U", Foam::name(s.u), uAllowed);
+    }
+    s.p = getAs<scalar>(*sd, "p", inRange);
+    if (!gasLimits::inRange(s.p))
+    {
+        badEntry(*sd, "p", Foam::name(s.p), inRange);
+    }
     return s;
 }
 
