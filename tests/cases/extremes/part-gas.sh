@@ -8,7 +8,7 @@
 #               300 cells
 #   vacuum      a double rarefaction close to vacuum: x in [0, 1], jump at
 #               0.5, gamma 1.4, rho 1, p 0.4, U -/+3.5 (vacuum would form at
-#               |U| >= 3.74): exact rho* 1.1e-6, p* 1.7e-9; t = 0.1;
+#               |U| >= 3.74): exact rho* 1.1e-6, p* 1.9e-9; t = 0.1;
 #               200 cells
 #   mach10      a Mach 10 shock into still gas (rho 1, p 1, gamma 1.4; the
 #               Rankine-Hugoniot state behind it, rho 5.714, U 9.762, p
