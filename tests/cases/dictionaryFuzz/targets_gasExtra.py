@@ -2,7 +2,7 @@
 (same format as its targets_gas.py, which covers the shipped tutorials'
 entries only):
 
-    fuzz.py -j 1 -out DIR $MPMFOAM_DIR/tests/cases/gasBadInput/targets_gasExtra.py
+    fuzz.py -j 1 -out DIR $MPMFOAM_DIR/tests/cases/dictionaryFuzz/targets_gasExtra.py
 
   extra-explicit       every optional entry of shockMpmDict written out
                        (variables, maxDeltaT, maxRetries, schlierenScale,
