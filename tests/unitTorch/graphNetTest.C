@@ -5,14 +5,20 @@
 // on a 2D grid graph) lowering the one-step loss by at least 10x for both,
 // determinism for a seed, checkpoints reproducing predictions bit for bit and
 // resuming training exactly, clear errors for bad checkpoints, and the
-// parameter counts and forward-pass times of both models (printed).
+// parameter counts and forward-pass times of both models (printed); the
+// facade's predictions for inputs beyond single precision are non-finite
+// values, not a SIGFPE, with traps on, and its input statistics are the
+// normaliser's.
 
 #include "gridHierarchies.H"
 #include "bsmsModel.H"
 #include "mgnModel.H"
 #include "graphNetTrainer.H"
+#include "bsmsTrainerFacade.H"
 
 #include <gtest/gtest.h>
+#include <cfenv>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -328,4 +334,60 @@ TEST(graphNetTorch, parametersAndForwardTime)
     EXPECT_GT(nParam[0], 0);
     EXPECT_GT(nParam[1], 0);
     EXPECT_GT(ms[0], 0);
+}
+
+
+// With floating-point traps on (as FOAM_SIGFPE sets them), an input beyond
+// single precision (1e39) gives non-finite predictions, not a SIGFPE: the
+// facade runs torch with traps off and restores them.  Its input
+// statistics are the normaliser's mean and standard deviation.
+TEST(graphNetTorch, facadeOutOfRangeInputs)
+{
+    const bsmsData::hierarchy h = gridHierarchies::grid(8, 6, 8);
+    const advectionDiffusion problem{8, 6};
+    trainerSettings s;
+    s.model = "bsms";
+    s.nIn = 1;
+    s.nOut = 1;
+    s.latent = 8;
+    s.hidden = 8;
+    s.normAccumulations = 5;
+    s.lr = 3e-3;
+    s.seed = 1;
+    bsmsTrainerFacade F(h, s);
+    torch::manual_seed(3);
+    for (int k = 0; k < 5; ++k)
+    {
+        const auto b = problem.batch(4);
+        const torch::Tensor x = b.first.to(torch::kFloat64).contiguous();
+        const torch::Tensor y = b.second.to(torch::kFloat64).contiguous();
+        F.trainStep
+        (
+            std::vector<double>(x.data_ptr<double>(), x.data_ptr<double>() + x.numel()),
+            std::vector<double>(y.data_ptr<double>(), y.data_ptr<double>() + y.numel())
+        );
+    }
+
+    std::vector<double> mean, sd;
+    EXPECT_EQ(F.inputStatistics(mean, sd), 5*4*48);
+    ASSERT_EQ(mean.size(), 1u);
+    EXPECT_LT(std::abs(mean[0]), 0.3);      // randn inputs: mean 0, std 1
+    EXPECT_GT(sd[0], 0.8);
+    EXPECT_LT(sd[0], 1.2);
+
+    const int traps = FE_OVERFLOW | FE_INVALID | FE_DIVBYZERO;
+    feenableexcept(traps);
+    std::vector<double> x(48, 0.5);
+    const std::vector<double> ok(F.predict(x));
+    x[7] = 1e39;
+    const std::vector<double> bad(F.predict(x));
+    const int after = fegetexcept();
+    fedisableexcept(traps);
+
+    EXPECT_EQ(after & traps, traps) << "traps restored";
+    bool finiteOk = true, anyBad = false;
+    for (const double v : ok) finiteOk = finiteOk && std::isfinite(v);
+    for (const double v : bad) anyBad = anyBad || !std::isfinite(v);
+    EXPECT_TRUE(finiteOk);
+    EXPECT_TRUE(anyBad);
 }

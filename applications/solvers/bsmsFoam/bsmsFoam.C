@@ -21,16 +21,24 @@ Description
     The log shows each model step's time and wall-clock cost, and at the
     end the mean cost per model step and per unit of simulated time (to
     compare with the solver the model replaces).  A non-finite prediction
-    writes the last good state and stops with a message.
+    writes the last good state and stops with a message (exit status 1);
+    if the first step fails, the start time's files are left as they are.
+
+    A state outside the range the model was trained on (an input field
+    more than bsmsRangeWarning standard deviations of the training inputs
+    beyond the training range that bsmsTrain recorded, see bsmsInputRange)
+    gives a warning naming the field, the value, the cell and the range,
+    once per field; the end of the log says how far each such field went.
 
 Usage
-    bsmsFoam [-case dir] [-model file]
+    bsmsFoam [-case dir] [-model file] [-rangeWarning nStd]
 
     The model (default constant/bsmsModel.pt, with its model dictionary
     constant/bsmsModelDict beside it, both written by bsmsTrain) can also be
     named in system/controlDict:
     \verbatim
         bsmsModel   "constant/bsmsModel.pt";
+        bsmsRangeWarning 2;     // standard deviations; default 2
     \endverbatim
 
 \*---------------------------------------------------------------------------*/
@@ -39,6 +47,7 @@ Usage
 #include "OSspecific.H"
 #include "bsmsSurrogateModel.H"
 #include "bsmsFieldIO.H"
+#include "dictionaryChecks.H"
 
 #include <chrono>
 #include <cstdio>
@@ -59,6 +68,14 @@ int main(int argc, char *argv[])
         "the checkpoint (default: bsmsModel in system/controlDict, else"
         " constant/bsmsModel.pt)"
     );
+    argList::addOption
+    (
+        "rangeWarning",
+        "nStd",
+        "warn when an input field lies more than nStd standard deviations"
+        " of the training inputs beyond the training range (default:"
+        " bsmsRangeWarning in system/controlDict, else 2)"
+    );
 
     #include "setRootCase.H"
     #include "createTime.H"
@@ -68,6 +85,19 @@ int main(int argc, char *argv[])
     fileName modelFile("constant/bsmsModel.pt");
     controlDict.readIfPresent("bsmsModel", modelFile);
     args.readIfPresent("model", modelFile);
+    scalar rangeWarning = dictionaryChecks::getInRange
+    (
+        controlDict, "bsmsRangeWarning", 2, 0, 1e30
+    );
+    if (args.readIfPresent("rangeWarning", rangeWarning))
+    {
+        if (!(rangeWarning > 0 && rangeWarning <= 1e30))
+        {
+            FatalErrorInFunction
+                << "-rangeWarning " << rangeWarning << ": a number of"
+                << " standard deviations > 0 is needed" << exit(FatalError);
+        }
+    }
     modelFile.expand();
     if (!modelFile.isAbsolute()) modelFile = runTime.path()/modelFile;
 
@@ -152,6 +182,24 @@ int main(int argc, char *argv[])
             controlDict, "bsmsModel")
     );
 
+    // The training range of the inputs: the start state, then each step's
+    bsmsInputRange range(model->inputRange(rangeWarning));
+    auto checkRange = [&](const scalar t)
+    {
+        for (const string& m : range.check(state, t))
+        {
+            WarningIn("bsmsFoam") << "Model " << modelFile.name() << ": "
+                << m.c_str() << endl;
+        }
+    };
+    if (!range.active())
+    {
+        WarningInFunction << "Model " << modelFile << " holds no input"
+            << " statistics (never trained?): its inputs are not checked"
+            << " against a training range" << endl;
+    }
+    checkRange(runTime.value());
+
     runTime.setDeltaT(spec.deltaT);
     const auto t0 = std::chrono::steady_clock::now();
     label nModelSteps = 0;
@@ -172,17 +220,29 @@ int main(int argc, char *argv[])
 
         if (!allFinite(next))
         {
+            const scalar tBad = runTime.value();
             runTime.setTime(runTime.value() - spec.deltaT, runTime.timeIndex());
-            setFields(mesh, state, spec.inputFields, spec.inputComponents,
-                spec.outputFields);
-            runTime.writeNow();
+            for (const string& m : range.summary())
+            {
+                Info<< "Model " << modelFile.name() << ": " << m.c_str() << nl;
+            }
+            if (nModelSteps > 1)
+            {
+                setFields(mesh, state, spec.inputFields, spec.inputComponents,
+                    spec.outputFields);
+                runTime.writeNow();
+            }
             FatalErrorInFunction
-                << "The model predicted non-finite values at t = "
-                << runTime.value() + spec.deltaT << "; the last good state"
-                << " (t = " << runTime.timeName() << ") is written"
+                << "The model predicted non-finite values at t = " << tBad
+                << " (model step " << nModelSteps << "); the last good state"
+                << (nModelSteps > 1 ? " is written at t = " : " is the start"
+                    " time t = ")
+                << runTime.timeName()
+                << (nModelSteps > 1 ? "" : ", whose files are left as they are")
                 << exit(FatalError);
         }
         state.swap(next);
+        checkRange(runTime.value());
         setFields(mesh, state, spec.inputFields, spec.inputComponents,
             spec.outputFields);
         if (phi.valid())
@@ -210,6 +270,10 @@ int main(int argc, char *argv[])
         wall/max(simulated, SMALL)
     );
     Info<< nl << buf << nl;
+    for (const string& m : range.summary())
+    {
+        Info<< "Model " << modelFile.name() << ": " << m.c_str() << nl;
+    }
     Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
         << "  ClockTime = " << runTime.elapsedClockTime() << " s"
         << nl << nl << "End" << nl << endl;

@@ -89,8 +89,14 @@ Usage
     \endverbatim
     Everything but inputFields and outputFields has the default shown
     (checkpointInterval: steps; printInterval: steps/20; no validation).
+    lr and lrMin lie in (0, 1] (Adam moves a weight by up to lr a step),
+    lrDecay in (0, 1], decaySteps in [1, 1e300], noise in [0, 1e30] (the
+    network computes in single precision).
     bsmsTrain writes the model dictionary (bsmsModelSpec) beside the
-    checkpoint: constant/bsmsModel.pt -> constant/bsmsModelDict.  Bad entries, a
+    checkpoint: constant/bsmsModel.pt -> constant/bsmsModelDict, with the
+    training range of every state component (inputMin, inputMax: the
+    smallest and largest value over the training states), against which
+    bsmsFoam and bsmsSurrogate check the states they are fed.  Bad entries, a
     field missing from a case's time directory, a case with fewer than two
     written times and a checkpoint that does not match stop with a
     FatalIOError naming the file and the entry.  Serial only.
@@ -276,15 +282,25 @@ int main(int argc, char *argv[])
 
     // Training settings
     gnnTorch::trainerSettings s;
-    s.lr = getPositive(dict, "lr", 1e-4);
-    s.lrMin = getPositive(dict, "lrMin", 1e-6);
-    s.lrDecay = getPositive(dict, "lrDecay", 0.1);
-    s.decaySteps = getPositive(dict, "decaySteps", 5e6);
-    const scalar noise =
-        getAsOrDefault<scalar>(dict, "noise", 0, "a number >= 0");
-    if (!(noise >= 0) || !std::isfinite(noise))
+    // Bounds that keep the single-precision network finite: Adam moves
+    // each weight by up to lr per step (lr > 1 throws any O(1) weight
+    // away), lrDecay > 1 grows lr without bound, noise beyond 1e30 leaves
+    // the float range
+    s.lr = getInRange(dict, "lr", 1e-4, 0, 1);
+    s.lrMin = getInRange(dict, "lrMin", 1e-6, 0, 1);
+    s.lrDecay = getInRange(dict, "lrDecay", 0.1, 0, 1);
+    s.decaySteps = getInRange(dict, "decaySteps", 5e6, 0, 1e300);
+    if (s.decaySteps < 1)
     {
-        badEntry(dict, "noise", name(noise), "a finite number >= 0");
+        badEntry(dict, "decaySteps", name(s.decaySteps),
+            "a number of steps >= 1 and <= 1e300");
+    }
+    const string allowedNoise("a finite number >= 0 and <= 1e30");
+    const scalar noise =
+        getAsOrDefault<scalar>(dict, "noise", 0, allowedNoise);
+    if (!(noise >= 0 && noise <= 1e30))
+    {
+        badEntry(dict, "noise", name(noise), allowedNoise);
     }
     s.normAccumulations = getLabelAtLeast(dict, "normAccumulations", 1000, 1);
     s.seed = getLabelAtLeast(dict, "seed", 0, 0);
@@ -390,6 +406,23 @@ int main(int argc, char *argv[])
     }
     const label nPairs = pairs.size();
     const label nState = spec.nState();
+
+    // The training range per state component, for the model dictionary
+    // (bsmsInputRange checks rollout states against it)
+    spec.inputMin.setSize(nState, GREAT);
+    spec.inputMax.setSize(nState, -GREAT);
+    for (const bsmsTrajectory& tr : train)
+    {
+        for (const auto& st : tr.states)
+        {
+            for (std::size_t i = 0; i < st.size(); ++i)
+            {
+                const label c = i % nState;
+                spec.inputMin[c] = min(spec.inputMin[c], st[i]);
+                spec.inputMax[c] = max(spec.inputMax[c], st[i]);
+            }
+        }
+    }
     Info<< nPairs << " training pairs; per node " << nState
         << " input field components " << spec.inputFields << ", "
         << spec.nTypes() << " node types " << spec.nodeTypes << ", "
@@ -685,6 +718,31 @@ int main(int argc, char *argv[])
         std::snprintf(buf, sizeof(buf), "%.6e", sum/nPairs);
         Info<< "Final one-step loss over " << nPairs << " pairs (no noise): "
             << buf << nl;
+    }
+
+    // The training range recorded in the model dictionary
+    {
+        Info<< "Training range of the inputs (inputMin, inputMax of "
+            << bsmsSpecFile(checkpoint).name() << "):";
+        label o = 0;
+        forAll(spec.inputFields, i)
+        {
+            for (label c = 0; c < spec.inputComponents[i]; ++c)
+            {
+                if (!m.used(o + c)) continue;
+                std::snprintf
+                (
+                    buf, sizeof(buf), " %s%s [%.4g, %.4g]",
+                    spec.inputFields[i].c_str(),
+                    spec.inputComponents[i] == 3
+                  ? (c == 0 ? "_x" : c == 1 ? "_y" : "_z") : "",
+                    spec.inputMin[o + c], spec.inputMax[o + c]
+                );
+                Info<< buf;
+            }
+            o += spec.inputComponents[i];
+        }
+        Info<< nl;
     }
 
     Info<< nl << "End" << nl << endl;

@@ -5,6 +5,7 @@
 
 #include "bsmsTrainerFacade.H"
 #include "graphNetTrainer.H"
+#include <cfenv>
 
 namespace gnnTorch
 {
@@ -49,6 +50,28 @@ trainerConfig configOf(const trainerSettings& s)
     return c;
 }
 
+//- Floating-point traps off for the life of the object (the torch kernels
+//  may overflow on out-of-range inputs; the callers check the results),
+//  restored with the exception flags cleared
+class fpeTrapsOff
+{
+    int traps_;
+public:
+    fpeTrapsOff()
+    :
+        traps_(fegetexcept())
+    {
+        fedisableexcept(FE_ALL_EXCEPT);
+    }
+    ~fpeTrapsOff()
+    {
+        feclearexcept(FE_ALL_EXCEPT);
+        feenableexcept(traps_);
+    }
+    fpeTrapsOff(const fpeTrapsOff&) = delete;
+    void operator=(const fpeTrapsOff&) = delete;
+};
+
 } // End anonymous namespace
 
 
@@ -71,6 +94,7 @@ double bsmsTrainerFacade::trainStep
     const std::vector<double>& y
 )
 {
+    fpeTrapsOff noTraps;
     return impl_->trainer.trainStep(x, y);
 }
 
@@ -81,6 +105,7 @@ double bsmsTrainerFacade::loss
     const std::vector<double>& y
 )
 {
+    fpeTrapsOff noTraps;
     auto& t = impl_->trainer;
     const std::int64_t n = t.net().nNodes();
     const auto X = torch::tensor(x, torch::kFloat64)
@@ -93,7 +118,24 @@ double bsmsTrainerFacade::loss
 
 std::vector<double> bsmsTrainerFacade::predict(const std::vector<double>& x)
 {
+    fpeTrapsOff noTraps;
     return impl_->trainer.predict(x);
+}
+
+
+std::int64_t bsmsTrainerFacade::inputStatistics
+(
+    std::vector<double>& mean,
+    std::vector<double>& std
+) const
+{
+    fpeTrapsOff noTraps;
+    normaliser& n = impl_->trainer.inputNormaliser();
+    const torch::Tensor m = n->mean().to(torch::kFloat64).contiguous();
+    const torch::Tensor s = n->std().to(torch::kFloat64).contiguous();
+    mean.assign(m.data_ptr<double>(), m.data_ptr<double>() + m.numel());
+    std.assign(s.data_ptr<double>(), s.data_ptr<double>() + s.numel());
+    return n->nSamples();
 }
 
 

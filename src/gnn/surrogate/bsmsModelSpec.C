@@ -126,6 +126,22 @@ Foam::bsmsModelSpec Foam::bsmsModelSpec::read(const dictionary& dict)
     s.increment = (p == "increment");
     s.deltaT = getPositive(dict, "deltaT");
     s.check(dict);
+    for (const word k : {"inputMin", "inputMax"})
+    {
+        if (!dict.found(k, keyType::LITERAL)) continue;
+        const List<scalar> v(getAs<List<scalar>>(dict, k, "a list of numbers"));
+        if (v.size() != s.nState())
+        {
+            badEntry(dict, k, entryText(dict, k),
+                "one number per state component (" + name(s.nState()) + ")");
+        }
+        (k == "inputMin" ? s.inputMin : s.inputMax) = v;
+    }
+    if (s.inputMin.size() != s.inputMax.size())
+    {
+        missingEntry(dict, s.inputMin.empty() ? "inputMin" : "inputMax",
+            "inputMin and inputMax together");
+    }
     return s;
 }
 
@@ -145,6 +161,11 @@ void Foam::bsmsModelSpec::write(Ostream& os) const
     os.writeEntry("nodeTypes", nodeTypes);
     os.writeEntry("predict", word(increment ? "increment" : "state"));
     os.writeEntry("deltaT", deltaT);
+    if (inputMin.size())
+    {
+        os.writeEntry("inputMin", inputMin);
+        os.writeEntry("inputMax", inputMax);
+    }
 }
 
 

@@ -26,6 +26,16 @@ namespace functionObjects
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+void Foam::functionObjects::bsmsSurrogate::checkRange()
+{
+    for (const string& m : range_->check(state_, modelTime_))
+    {
+        WarningInFunction
+            << type() << ' ' << name() << ": " << m.c_str() << endl;
+    }
+}
+
+
 void Foam::functionObjects::bsmsSurrogate::start()
 {
     if (Pstream::parRun())
@@ -61,6 +71,8 @@ void Foam::functionObjects::bsmsSurrogate::start()
     }
     nModelSteps_ = 0;
     modelSeconds_ = 0;
+    range_.reset(new bsmsInputRange(model_->inputRange(rangeWarning_)));
+    checkRange();
 
     // The prediction and error fields of the outputs
     forAll(spec.inputFields, i)
@@ -192,7 +204,8 @@ Foam::functionObjects::bsmsSurrogate::bsmsSurrogate
     modelTime_(0),
     nModelSteps_(0),
     modelSeconds_(0),
-    failed_(false)
+    failed_(false),
+    rangeWarning_(2)
 {
     read(dict);
 }
@@ -218,6 +231,12 @@ bool Foam::functionObjects::bsmsSurrogate::read(const dictionary& dict)
     (
         dict, "startTime", time_.startTime().value(), "a time"
     );
+    if (!std::isfinite(startTime_) || mag(startTime_) > 1e30)
+    {
+        badEntry(dict, "startTime", Foam::name(startTime_),
+            "a finite time of magnitude <= 1e30");
+    }
+    rangeWarning_ = getInRange(dict, "rangeWarning", 2, 0, 1e30);
     return true;
 }
 
@@ -253,13 +272,23 @@ bool Foam::functionObjects::bsmsSurrogate::execute()
                 << type() << ' ' << name() << ": the model predicted"
                 << " non-finite values at t = " << modelTime_ << " (model"
                 << " step " << nModelSteps_ << "); the rollout stops and"
-                << " keeps its last good state" << endl;
+                << " keeps its last good state (t = "
+                << modelTime_ - spec.deltaT << "); the solver goes on"
+                << endl;
+            for (const string& m : range_->summary())
+            {
+                Info<< type() << ' ' << name() << ": " << m.c_str() << nl;
+            }
             file_() << "# non-finite prediction at t = " << modelTime_
                 << "; rollout stopped" << endl;
+            // The state kept is the last good one: so are its time and step
+            modelTime_ -= spec.deltaT;
+            --nModelSteps_;
             failed_ = true;
             return true;
         }
         state_.swap(next);
+        checkRange();
         reached = mag(t - modelTime_) < eps;
 
         if (reached)

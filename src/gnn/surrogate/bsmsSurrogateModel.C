@@ -160,6 +160,17 @@ Foam::string Foam::bsmsSurrogateModel::levelSizes() const
 }
 
 
+Foam::bsmsInputRange Foam::bsmsSurrogateModel::inputRange
+(
+    const double nStd
+) const
+{
+    std::vector<double> mean, std;
+    const long n = long(net_->inputStatistics(mean, std));
+    return bsmsInputRange(spec_, used_, mean, std, n, nStd);
+}
+
+
 void Foam::bsmsSurrogateModel::appendInput
 (
     const std::vector<double>& state,
