@@ -9,6 +9,7 @@
 #include "DynamicList.H"
 
 #include <algorithm>
+#include <limits>
 
 // * * * * * * * * * * * * * * * Local tables  * * * * * * * * * * * * * * //
 
@@ -94,6 +95,44 @@ bool smallSolve(Foam::label n, Foam::scalar A[3][3], Foam::scalar r[3])
     {
         for (Foam::label j = k + 1; j < n; ++j) r[k] -= A[k][j]*r[j];
         r[k] /= A[k][k];
+    }
+    return true;
+}
+
+// Inverse of the n x n matrix T (n <= 3): closed form in 1D and 2D, column
+// by column in 3D; false if T is singular
+bool invertSmall
+(
+    Foam::label n,
+    const Foam::scalar T[3][3],
+    Foam::scalar Tinv[3][3]
+)
+{
+    if (n == 1)
+    {
+        if (T[0][0] == 0) return false;
+        Tinv[0][0] = 1/T[0][0];
+        return true;
+    }
+    if (n == 2)
+    {
+        const Foam::scalar det = T[0][0]*T[1][1] - T[0][1]*T[1][0];
+        if (det == 0) return false;
+        const Foam::scalar r = 1/det;
+        Tinv[0][0] = T[1][1]*r;
+        Tinv[0][1] = -T[0][1]*r;
+        Tinv[1][0] = -T[1][0]*r;
+        Tinv[1][1] = T[0][0]*r;
+        return true;
+    }
+    for (Foam::label j = 0; j < n; ++j)
+    {
+        Foam::scalar A[3][3], r[3] = {0, 0, 0};
+        for (Foam::label a = 0; a < n; ++a)
+            for (Foam::label b = 0; b < n; ++b) A[a][b] = T[a][b];
+        r[j] = 1;
+        if (!smallSolve(n, A, r)) return false;
+        for (Foam::label a = 0; a < n; ++a) Tinv[a][j] = r[a];
     }
     return true;
 }
@@ -259,6 +298,107 @@ void Foam::mpmMeshView::build()
         vertexSize_[v] = s/n;
         vertexMaxEdge_[v] = smax;
     }
+
+    buildMaps();
+}
+
+
+void Foam::mpmMeshView::buildMaps()
+{
+    const label nC = shapes_.size();
+    const label n = dim_;
+    mapType_.setSize(nC);
+    cellMap_.setSize(nC);
+    for (label c = 0; c < nC; ++c)
+    {
+        const shapeType s = shapes_[c];
+        const label* cv = &cellVertices_[cellStart_[c]];
+        const label nv = nShapeVertices(s);
+        cellMap& m = cellMap_[c];
+        for (label a = 0; a < 3; ++a)
+        {
+            m.x0[a] = 0;
+            for (label b = 0; b < 3; ++b) m.A[a][b] = 0;
+        }
+        scalar xl[8][3];
+        scalar big = 0;
+        for (label i = 0; i < nv; ++i)
+        {
+            const vector& xv = vertices_[cv[i]];
+            for (label a = 0; a < n; ++a)
+            {
+                xl[i][a] = xv[axes_[a]];
+                big = max(big, std::abs(xl[i][a]));
+            }
+        }
+
+        // The affine part from vertex 0: T columns x_j - x_0 for the
+        // simplex vertices j = 1..dim, or for the quad/hex vertices at
+        // unit xi_0, xi_1 (, xi_2)
+        static const label qv[3] = {1, 3, 4};
+        scalar T[3][3];
+        for (label a = 0; a < n; ++a)
+        {
+            for (label j = 0; j < n; ++j)
+            {
+                const label v = (s == QUAD || s == HEX) ? qv[j] : j + 1;
+                T[a][j] = xl[v][a] - xl[0][a];
+            }
+        }
+
+        // Quads and hexes are affine when every vertex lies where the
+        // affine part puts it, to a few units of round-off of the
+        // coordinates (blockMesh's parallelograms are, to the last bits)
+        bool affine = true;
+        if (s == QUAD || s == HEX)
+        {
+            const scalar tol = 16*std::numeric_limits<scalar>::epsilon()*big;
+            const scalar (*ref)[3] = hexRef;
+            scalar qref[4][3];
+            if (s == QUAD)
+            {
+                for (label i = 0; i < 4; ++i)
+                {
+                    qref[i][0] = quadRef[i][0];
+                    qref[i][1] = quadRef[i][1];
+                    qref[i][2] = 0;
+                }
+                ref = qref;
+            }
+            for (label i = 0; i < nv && affine; ++i)
+            {
+                for (label a = 0; a < n; ++a)
+                {
+                    scalar xa = xl[0][a];
+                    for (label j = 0; j < n; ++j) xa += ref[i][j]*T[a][j];
+                    if (std::abs(xa - xl[i][a]) > tol) { affine = false; break; }
+                }
+            }
+        }
+
+        if (affine)
+        {
+            for (label a = 0; a < n; ++a) m.x0[a] = xl[0][a];
+            mapType_[c] = invertSmall(n, T, m.A) ? AFFINE : DEGENERATE;
+            continue;
+        }
+
+        // Curved: the centre and the inverse Jacobian there (the first
+        // Newton step from xi = 1/2)
+        scalar N[8];
+        vector dN[8];
+        multilinear(s, vector::uniform(0.5), N, dN);
+        scalar J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+        for (label i = 0; i < nv; ++i)
+        {
+            for (label a = 0; a < n; ++a)
+            {
+                m.x0[a] += N[i]*xl[i][a];
+                for (label b = 0; b < n; ++b) J[a][b] += xl[i][a]*dN[i][b];
+            }
+        }
+        mapType_[c] = invertSmall(n, J, m.A) ? CURVED : DEGENERATE;
+    }
 }
 
 
@@ -325,6 +465,160 @@ Foam::mpmMeshView::mpmMeshView
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
+void Foam::mpmMeshView::degenerate(const label c) const
+{
+    const shapeType s = shapes_[c];
+    FatalErrorInFunction
+        << "Degenerate " << shapeName(s) << " cell " << c
+        << (s == QUAD || s == HEX
+            ? " (singular isoparametric map)" : " (zero volume)")
+        << exit(FatalError);
+}
+
+
+bool Foam::mpmMeshView::isoparametric
+(
+    const label c,
+    const vector& x,
+    vector& xi
+) const
+{
+    const label n = dim_;
+    const cellMap& m = cellMap_[c];
+    const mapType k = mapType_[c];
+    if (k == DEGENERATE) degenerate(c);
+
+    // The affine map: exact for parallelograms and parallelepipeds, the
+    // first Newton step from the centre otherwise
+    scalar d[3];
+    for (label a = 0; a < n; ++a) d[a] = x[axes_[a]] - m.x0[a];
+    xi = Zero;
+    for (label b = 0; b < n; ++b)
+    {
+        scalar t = 0;
+        for (label a = 0; a < n; ++a) t += m.A[b][a]*d[a];
+        xi[b] = t;
+    }
+    if (k == AFFINE) return true;
+
+    // Curved cell: Newton on the isoparametric map from the affine guess
+    const shapeType s = shapes_[c];
+    const label* cv = &cellVertices_[cellStart_[c]];
+    const label nv = nShapeVertices(s);
+    scalar xl[8][3];
+    for (label i = 0; i < nv; ++i)
+    {
+        const vector& xv = vertices_[cv[i]];
+        for (label a = 0; a < n; ++a) xl[i][a] = xv[axes_[a]];
+    }
+    scalar size2 = 0;
+    for (label a = 0; a < n; ++a) size2 += sqr(xl[nv - 2][a] - xl[0][a]);
+
+    // Keep the iterate near the cell: far outside, the map folds
+    for (label b = 0; b < n; ++b)
+    {
+        xi[b] = max(scalar(-2), min(scalar(3), scalar(0.5) + xi[b]));
+    }
+    scalar N[8];
+    vector dN[8];
+    for (label iter = 0; iter < 30; ++iter)
+    {
+        multilinear(s, xi, N, dN);
+        scalar r[3] = {0, 0, 0};
+        scalar J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+        for (label i = 0; i < nv; ++i)
+        {
+            for (label a = 0; a < n; ++a)
+            {
+                r[a] += N[i]*xl[i][a];
+                for (label b = 0; b < n; ++b) J[a][b] += xl[i][a]*dN[i][b];
+            }
+        }
+        scalar res2 = 0;
+        for (label a = 0; a < n; ++a)
+        {
+            r[a] = x[axes_[a]] - r[a];
+            res2 += r[a]*r[a];
+        }
+        // Converged to round-off: no further step
+        if (res2 <= 1e-28*size2) return true;
+        if (!smallSolve(n, J, r)) degenerate(c);
+        scalar step = 0;
+        for (label a = 0; a < n; ++a)
+        {
+            xi[a] = max(scalar(-2), min(scalar(3), xi[a] + r[a]));
+            step = max(step, std::abs(r[a]));
+        }
+        if (step < 1e-14) break;
+    }
+
+    // Converged? (Far outside a distorted cell Newton may not be.)
+    multilinear(s, xi, N, dN);
+    scalar res2 = 0;
+    for (label a = 0; a < n; ++a)
+    {
+        scalar xr = 0;
+        for (label i = 0; i < nv; ++i) xr += N[i]*xl[i][a];
+        res2 += sqr(xr - x[axes_[a]]);
+    }
+    return res2 <= 1e-20*size2;
+}
+
+
+Foam::scalar Foam::mpmMeshView::outside
+(
+    const label c,
+    const vector& x,
+    label& exitFace
+) const
+{
+    const shapeType s = shapes_[c];
+    const label n = dim_;
+    scalar out = 0;
+    exitFace = -1;
+
+    if (s == SEGMENT || s == TRIANGLE || s == TET)
+    {
+        // The barycentric coordinates as shapeFunctions computes them
+        if (mapType_[c] == DEGENERATE) degenerate(c);
+        const cellMap& m = cellMap_[c];
+        scalar d[3];
+        for (label a = 0; a < n; ++a) d[a] = x[axes_[a]] - m.x0[a];
+        scalar lsum = 0;
+        for (label j = 0; j < n; ++j)
+        {
+            scalar l = 0;
+            for (label a = 0; a < n; ++a) l += m.A[j][a]*d[a];
+            lsum += l;
+            if (-l > out) { out = -l; exitFace = j + 1; }
+        }
+        // Vertex 0 comes first in shapeFunctions' scan: same tie order
+        const scalar l0 = 1 - lsum;
+        if (-l0 > out || (-l0 == out && out > 0))
+        {
+            out = -l0;
+            exitFace = 0;
+        }
+        return out;
+    }
+
+    vector xi;
+    const bool converged = isoparametric(c, x, xi);
+    for (label a = 0; a < n; ++a)
+    {
+        if (-xi[a] > out) { out = -xi[a]; exitFace = 2*a; }
+        if (xi[a] - 1 > out) { out = xi[a] - 1; exitFace = 2*a + 1; }
+    }
+    if (!converged)
+    {
+        // Not this cell: head the walk the way the last iterate points
+        out = max(out, scalar(1));
+        if (exitFace < 0) exitFace = 0;
+    }
+    return out;
+}
+
+
 void Foam::mpmMeshView::shapeFunctions
 (
     const label c,
@@ -333,63 +627,17 @@ void Foam::mpmMeshView::shapeFunctions
 ) const
 {
     const shapeType s = shapes_[c];
-    const label* cv = &cellVertices_[cellStart_[c]];
+    const label n = dim_;
     sv.n = nShapeVertices(s);
+    const cellMap& m = cellMap_[c];
 
     if (s == SEGMENT || s == TRIANGLE || s == TET)
     {
-        // Barycentric: solve T l = x - x0, T columns x_i - x0 (i >= 1)
-        const label n = dim_;
-        const vector& x0 = vertices_[cv[0]];
-        scalar T[3][3], Tinv[3][3];
-        for (label i = 0; i < n; ++i)
-        {
-            for (label j = 0; j < n; ++j)
-            {
-                T[i][j] = vertices_[cv[j + 1]][axes_[i]] - x0[axes_[i]];
-            }
-        }
-        // Inverse (rows of T^-1 are grad l_j): closed form in 1D and 2D,
-        // column by column in 3D
-        bool singular = false;
-        if (n == 1)
-        {
-            singular = (T[0][0] == 0);
-            if (!singular) Tinv[0][0] = 1/T[0][0];
-        }
-        else if (n == 2)
-        {
-            const scalar det = T[0][0]*T[1][1] - T[0][1]*T[1][0];
-            singular = (det == 0);
-            if (!singular)
-            {
-                const scalar r = 1/det;
-                Tinv[0][0] = T[1][1]*r;
-                Tinv[0][1] = -T[0][1]*r;
-                Tinv[1][0] = -T[1][0]*r;
-                Tinv[1][1] = T[0][0]*r;
-            }
-        }
-        if (singular)
-        {
-            FatalErrorInFunction
-                << "Degenerate " << shapeName(s) << " cell " << c
-                << " (zero volume)" << exit(FatalError);
-        }
-        for (label j = 0; n == 3 && j < n; ++j)
-        {
-            scalar A[3][3], r[3] = {0, 0, 0};
-            for (label a = 0; a < n; ++a)
-                for (label b = 0; b < n; ++b) A[a][b] = T[a][b];
-            r[j] = 1;
-            if (!smallSolve(n, A, r))
-            {
-                FatalErrorInFunction
-                    << "Degenerate " << shapeName(s) << " cell " << c
-                    << " (zero volume)" << exit(FatalError);
-            }
-            for (label a = 0; a < n; ++a) Tinv[a][j] = r[a];
-        }
+        // Barycentric: l_j = (T^-1 (x - x0))_j, T columns x_j - x0, whose
+        // inverse (rows: grad l_j) the cell map holds
+        if (mapType_[c] == DEGENERATE) degenerate(c);
+        scalar d[3];
+        for (label a = 0; a < n; ++a) d[a] = x[axes_[a]] - m.x0[a];
         scalar lsum = 0;
         vector gsum(Zero);
         for (label j = 0; j < n; ++j)
@@ -398,8 +646,8 @@ void Foam::mpmMeshView::shapeFunctions
             vector g(Zero);
             for (label a = 0; a < n; ++a)
             {
-                l += Tinv[j][a]*(x[axes_[a]] - x0[axes_[a]]);
-                g[axes_[a]] = Tinv[j][a];
+                l += m.A[j][a]*d[a];
+                g[axes_[a]] = m.A[j][a];
             }
             sv.B[j + 1] = l;
             sv.gradB[j + 1] = g;
@@ -422,90 +670,42 @@ void Foam::mpmMeshView::shapeFunctions
         return;
     }
 
-    // Quad / hex: Newton on the isoparametric map
-    const label n = dim_;
+    // Quad / hex: reference coordinates, then grad N = J^-T dN/dxi with
+    // J^-1 from the cell map (affine) or at the point (curved)
     const label nv = sv.n;
+    vector xi;
+    const bool converged = isoparametric(c, x, xi);
     scalar N[8];
     vector dN[8];
-    vector xi(0.5, 0.5, n == 3 ? 0.5 : 0);
-    scalar J[3][3];
-    for (label iter = 0; iter < 30; ++iter)
+    multilinear(s, xi, N, dN);
+
+    scalar Ji[3][3];
+    if (mapType_[c] == AFFINE)
     {
-        multilinear(s, xi, N, dN);
-        scalar r[3] = {0, 0, 0};
         for (label a = 0; a < n; ++a)
-        {
-            for (label b = 0; b < n; ++b) J[a][b] = 0;
-        }
+            for (label b = 0; b < n; ++b) Ji[a][b] = m.A[a][b];
+    }
+    else
+    {
+        const label* cv = &cellVertices_[cellStart_[c]];
+        scalar J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
         for (label i = 0; i < nv; ++i)
         {
             const vector& xv = vertices_[cv[i]];
             for (label a = 0; a < n; ++a)
-            {
-                r[a] += N[i]*xv[axes_[a]];
                 for (label b = 0; b < n; ++b) J[a][b] += xv[axes_[a]]*dN[i][b];
-            }
         }
-        scalar res = 0;
-        for (label a = 0; a < n; ++a)
-        {
-            r[a] = x[axes_[a]] - r[a];
-            res += r[a]*r[a];
-        }
-        scalar A[3][3];
-        for (label a = 0; a < n; ++a)
-            for (label b = 0; b < n; ++b) A[a][b] = J[a][b];
-        if (!smallSolve(n, A, r))
-        {
-            FatalErrorInFunction
-                << "Degenerate " << shapeName(s) << " cell " << c
-                << " (singular isoparametric map)" << exit(FatalError);
-        }
-        scalar step = 0;
-        for (label a = 0; a < n; ++a)
-        {
-            // Keep the iterate near the cell: far outside, the map folds
-            xi[a] = max(scalar(-2), min(scalar(3), xi[a] + r[a]));
-            step = max(step, std::abs(r[a]));
-        }
-        if (step < 1e-14) break;
-    }
-    multilinear(s, xi, N, dN);
-
-    // Converged? (Far outside a distorted cell Newton may not be.)
-    scalar res2 = 0, size2 = 0;
-    {
-        vector xr(Zero);
-        for (label i = 0; i < nv; ++i) xr += N[i]*vertices_[cv[i]];
-        for (label a = 0; a < n; ++a)
-        {
-            res2 += sqr(xr[axes_[a]] - x[axes_[a]]);
-            size2 += sqr(vertices_[cv[nv - 2]][axes_[a]] - vertices_[cv[0]][axes_[a]]);
-        }
-    }
-    const bool converged = res2 <= 1e-20*size2;
-
-    // Jacobian at the solution and gradients grad N = J^-T dN/dxi
-    for (label a = 0; a < n; ++a)
-        for (label b = 0; b < n; ++b) J[a][b] = 0;
-    for (label i = 0; i < nv; ++i)
-    {
-        const vector& xv = vertices_[cv[i]];
-        for (label a = 0; a < n; ++a)
-            for (label b = 0; b < n; ++b) J[a][b] += xv[axes_[a]]*dN[i][b];
+        if (!invertSmall(n, J, Ji)) degenerate(c);
     }
     for (label i = 0; i < nv; ++i)
     {
-        // Solve J^T g = dN/dxi
-        scalar A[3][3], r[3];
-        for (label a = 0; a < n; ++a)
-        {
-            for (label b = 0; b < n; ++b) A[a][b] = J[b][a];
-            r[a] = dN[i][a];
-        }
-        smallSolve(n, A, r);
         vector g(Zero);
-        for (label a = 0; a < n; ++a) g[axes_[a]] = r[a];
+        for (label a = 0; a < n; ++a)
+        {
+            scalar t = 0;
+            for (label b = 0; b < n; ++b) t += Ji[b][a]*dN[i][b];
+            g[axes_[a]] = t;
+        }
         sv.B[i] = N[i];
         sv.gradB[i] = g;
     }
@@ -532,17 +732,16 @@ Foam::label Foam::mpmMeshView::findCell(const vector& x, const label start) cons
     const label nC = nCells();
     if (nC == 0) return -1;
 
-    shapeValues sv;
     label c = (start >= 0 && start < nC) ? start : 0;
+    label exitFace = -1;
     const label maxSteps = 100 + 4*label(std::pow(scalar(nC), 1.0/dim_) + 1);
     for (label step = 0; step < maxSteps; ++step)
     {
-        shapeFunctions(c, x, sv);
-        if (sv.outside <= tol)
+        if (outside(c, x, exitFace) <= tol)
         {
             return c;
         }
-        const label n = faceNeighbour(c, sv.exitFace);
+        const label n = faceNeighbour(c, exitFace);
         if (n < 0)
         {
             break;
@@ -553,8 +752,7 @@ Foam::label Foam::mpmMeshView::findCell(const vector& x, const label start) cons
     // The walk ended on the boundary or cycled: search every cell
     for (label d = 0; d < nC; ++d)
     {
-        shapeFunctions(d, x, sv);
-        if (sv.outside <= tol)
+        if (outside(d, x, exitFace) <= tol)
         {
             return d;
         }
