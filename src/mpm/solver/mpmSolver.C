@@ -79,18 +79,20 @@ void Foam::mpmSolver::updateStress(mpmParticles& P) const
 Foam::scalar Foam::mpmSolver::mechanicalEnergy
 (
     const mpmParticles& P,
-    scalar& motion
+    scalar& kinetic,
+    scalar& strain
 ) const
 {
-    scalar kinetic = 0, strain = 0, grav = 0;
+    scalar grav = 0;
+    kinetic = 0;
+    strain = 0;
     forAll(P.x, p)
     {
         kinetic += 0.5*P.m[p]*magSqr(P.v[p]);
         strain += P.V0[p]*P.psi[p];
         grav -= P.m[p]*(gravity_ & P.x[p]);
     }
-    motion = kinetic + strain;
-    return motion + grav;
+    return kinetic + strain + grav;
 }
 
 
@@ -184,8 +186,8 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
 
     // The energy bound: the energy in motion at the start plus what
     // gravity can release over the mesh's extent along g
-    scalar motion = 0;
-    energy0_ = mechanicalEnergy(P, motion);
+    scalar kinetic = 0, strain = 0;
+    energy0_ = mechanicalEnergy(P, kinetic, strain);
     scalar release = 0;
     if (magSqr(gravity_) > 0)
     {
@@ -200,7 +202,7 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
         for (const scalar m : P.m) mass += m;
         release = mass*mag(gravity_)*(hi - lo);
     }
-    energyGrowthBound_ = motion + release;
+    energyGrowthBound_ = kinetic + strain + release;
 
     // Particles in cells touching the mesh boundary have one-sided 1-rings:
     // MLS weights can turn negative there (Fig. 2.6)
@@ -288,8 +290,8 @@ Foam::string Foam::mpmSolver::deltaTReason() const
 
 bool Foam::mpmSolver::energyBounded(const mpmParticles& P)
 {
-    scalar motion = 0;
-    const scalar E = mechanicalEnergy(P, motion);
+    scalar kinetic = 0, strain = 0;
+    const scalar E = mechanicalEnergy(P, kinetic, strain);
     const scalar growth = E - energy0_;
     if
     (
