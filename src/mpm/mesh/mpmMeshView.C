@@ -137,6 +137,32 @@ bool invertSmall
     return true;
 }
 
+// B = N and grad B = J^-T dN/dxi of a quad (D = 2) or hex (D = 3)
+template<int D>
+inline void cubeGradients
+(
+    const Foam::scalar Ji[3][3],
+    const Foam::scalar* N,
+    const Foam::vector* dN,
+    const Foam::label nv,
+    const Foam::FixedList<Foam::label, 3>& axes,
+    Foam::mpmMeshView::shapeValues& sv
+)
+{
+    for (Foam::label i = 0; i < nv; ++i)
+    {
+        Foam::vector g(Foam::Zero);
+        for (int a = 0; a < D; ++a)
+        {
+            Foam::scalar t = 0;
+            for (int b = 0; b < D; ++b) t += Ji[b][a]*dN[i][b];
+            g[axes[a]] = t;
+        }
+        sv.B[i] = N[i];
+        sv.gradB[i] = g;
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -410,30 +436,32 @@ void Foam::mpmMeshView::multilinear
     vector* dNdxi
 ) const
 {
+    // Products of (1 - xi_d) or xi_d by the vertices' reference corners
+    // (quadRef, hexRef), written out: the same products, no branches
+    const scalar a[2] = {1 - xi[0], xi[0]};
+    const scalar b[2] = {1 - xi[1], xi[1]};
+    const scalar sg[2] = {-1, 1};
+    static const label cx[8] = {0, 1, 1, 0, 0, 1, 1, 0};
+    static const label cy[8] = {0, 0, 1, 1, 0, 0, 1, 1};
+    static const label cz[8] = {0, 0, 0, 0, 1, 1, 1, 1};
     if (s == QUAD)
     {
         for (label i = 0; i < 4; ++i)
         {
-            const scalar a = quadRef[i][0] ? xi[0] : 1 - xi[0];
-            const scalar b = quadRef[i][1] ? xi[1] : 1 - xi[1];
-            const scalar da = quadRef[i][0] ? 1 : -1;
-            const scalar db = quadRef[i][1] ? 1 : -1;
-            N[i] = a*b;
-            dNdxi[i] = vector(da*b, a*db, 0);
+            const scalar ai = a[cx[i]], bi = b[cy[i]];
+            N[i] = ai*bi;
+            dNdxi[i] = vector(sg[cx[i]]*bi, ai*sg[cy[i]], 0);
         }
     }
     else
     {
+        const scalar c[2] = {1 - xi[2], xi[2]};
         for (label i = 0; i < 8; ++i)
         {
-            const scalar a = hexRef[i][0] ? xi[0] : 1 - xi[0];
-            const scalar b = hexRef[i][1] ? xi[1] : 1 - xi[1];
-            const scalar c = hexRef[i][2] ? xi[2] : 1 - xi[2];
-            const scalar da = hexRef[i][0] ? 1 : -1;
-            const scalar db = hexRef[i][1] ? 1 : -1;
-            const scalar dc = hexRef[i][2] ? 1 : -1;
-            N[i] = a*b*c;
-            dNdxi[i] = vector(da*b*c, a*db*c, a*b*dc);
+            const scalar ai = a[cx[i]], bi = b[cy[i]], ci = c[cz[i]];
+            N[i] = ai*bi*ci;
+            dNdxi[i] =
+                vector(sg[cx[i]]*bi*ci, ai*sg[cy[i]]*ci, ai*bi*sg[cz[i]]);
         }
     }
 }
@@ -679,13 +707,9 @@ void Foam::mpmMeshView::shapeFunctions
     vector dN[8];
     multilinear(s, xi, N, dN);
 
-    scalar Ji[3][3];
-    if (mapType_[c] == AFFINE)
-    {
-        for (label a = 0; a < n; ++a)
-            for (label b = 0; b < n; ++b) Ji[a][b] = m.A[a][b];
-    }
-    else
+    scalar Jc[3][3];
+    const scalar (*Ji)[3] = m.A;
+    if (mapType_[c] != AFFINE)
     {
         const label* cv = &cellVertices_[cellStart_[c]];
         scalar J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
@@ -695,20 +719,11 @@ void Foam::mpmMeshView::shapeFunctions
             for (label a = 0; a < n; ++a)
                 for (label b = 0; b < n; ++b) J[a][b] += xv[axes_[a]]*dN[i][b];
         }
-        if (!invertSmall(n, J, Ji)) degenerate(c);
+        if (!invertSmall(n, J, Jc)) degenerate(c);
+        Ji = Jc;
     }
-    for (label i = 0; i < nv; ++i)
-    {
-        vector g(Zero);
-        for (label a = 0; a < n; ++a)
-        {
-            scalar t = 0;
-            for (label b = 0; b < n; ++b) t += Ji[b][a]*dN[i][b];
-            g[axes_[a]] = t;
-        }
-        sv.B[i] = N[i];
-        sv.gradB[i] = g;
-    }
+    if (n == 3) cubeGradients<3>(Ji, N, dN, nv, axes_, sv);
+    else cubeGradients<2>(Ji, N, dN, nv, axes_, sv);
 
     sv.outside = 0;
     sv.exitFace = -1;
