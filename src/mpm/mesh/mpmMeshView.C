@@ -137,6 +137,29 @@ bool invertSmall
     return true;
 }
 
+// B = N and grad B = J^-T dN/dxi of a hex (the axes of a 3D mesh are
+// x, y, z)
+inline void hexGradients
+(
+    const Foam::scalar Ji[3][3],
+    const Foam::scalar* N,
+    const Foam::vector* dN,
+    Foam::mpmMeshView::shapeValues& sv
+)
+{
+    for (Foam::label i = 0; i < 8; ++i)
+    {
+        const Foam::vector& d = dN[i];
+        sv.B[i] = N[i];
+        sv.gradB[i] = Foam::vector
+        (
+            Ji[0][0]*d[0] + Ji[1][0]*d[1] + Ji[2][0]*d[2],
+            Ji[0][1]*d[0] + Ji[1][1]*d[1] + Ji[2][1]*d[2],
+            Ji[0][2]*d[0] + Ji[1][2]*d[1] + Ji[2][2]*d[2]
+        );
+    }
+}
+
 // B = N and grad B = J^-T dN/dxi of a quad (D = 2) or hex (D = 3)
 template<int D>
 inline void cubeGradients
@@ -654,6 +677,29 @@ void Foam::mpmMeshView::shapeFunctions
     shapeValues& sv
 ) const
 {
+    evaluate(c, x, sv, true);
+}
+
+
+void Foam::mpmMeshView::shapeValuesOnly
+(
+    const label c,
+    const vector& x,
+    shapeValues& sv
+) const
+{
+    evaluate(c, x, sv, false);
+}
+
+
+void Foam::mpmMeshView::evaluate
+(
+    const label c,
+    const vector& x,
+    shapeValues& sv,
+    const bool gradients
+) const
+{
     const shapeType s = shapes_[c];
     const label n = dim_;
     sv.n = nShapeVertices(s);
@@ -671,19 +717,19 @@ void Foam::mpmMeshView::shapeFunctions
         for (label j = 0; j < n; ++j)
         {
             scalar l = 0;
-            vector g(Zero);
-            for (label a = 0; a < n; ++a)
-            {
-                l += m.A[j][a]*d[a];
-                g[axes_[a]] = m.A[j][a];
-            }
+            for (label a = 0; a < n; ++a) l += m.A[j][a]*d[a];
             sv.B[j + 1] = l;
-            sv.gradB[j + 1] = g;
             lsum += l;
-            gsum += g;
+            if (gradients)
+            {
+                vector g(Zero);
+                for (label a = 0; a < n; ++a) g[axes_[a]] = m.A[j][a];
+                sv.gradB[j + 1] = g;
+                gsum += g;
+            }
         }
         sv.B[0] = 1 - lsum;
-        sv.gradB[0] = -gsum;
+        if (gradients) sv.gradB[0] = -gsum;
 
         sv.outside = 0;
         sv.exitFace = -1;
@@ -709,7 +755,11 @@ void Foam::mpmMeshView::shapeFunctions
 
     scalar Jc[3][3];
     const scalar (*Ji)[3] = m.A;
-    if (mapType_[c] != AFFINE)
+    if (!gradients)
+    {
+        for (label i = 0; i < nv; ++i) sv.B[i] = N[i];
+    }
+    else if (mapType_[c] != AFFINE)
     {
         const label* cv = &cellVertices_[cellStart_[c]];
         scalar J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
@@ -722,7 +772,8 @@ void Foam::mpmMeshView::shapeFunctions
         if (!invertSmall(n, J, Jc)) degenerate(c);
         Ji = Jc;
     }
-    if (n == 3) cubeGradients<3>(Ji, N, dN, nv, axes_, sv);
+    if (!gradients) {}
+    else if (n == 3) hexGradients(Ji, N, dN, sv);
     else cubeGradients<2>(Ji, N, dN, nv, axes_, sv);
 
     sv.outside = 0;
