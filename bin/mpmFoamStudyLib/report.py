@@ -116,9 +116,11 @@ def summaryLines(study, results, targets, axis):
             lines.append(head + ": no point reaches its error")
         else:
             lines.append(head + ": equal accuracy at point %d  %s  %s %.4e  "
-                         "wall %.3f s: wall ratio %.3f"
+                         "wall %.3f s: wall ratio %.3f (CPU %.3f s / %.3f s "
+                         "= %.3f)"
                          % (c["point"], _text(c, study), study.error.name,
-                            c["error"], c["wall"], c["wall"] / ref["wall"]))
+                            c["error"], c["wall"], c["wall"] / ref["wall"],
+                            c["cpu"], ref["cpu"], c["cpu"] / ref["cpu"]))
     failed = [r for r in results if r.get("status") == "failed"]
     for r in failed:
         lines.append("point %d FAILED (%s): %s" % (r["point"], r.get("stage"),
