@@ -38,7 +38,9 @@ Each run is classified:
     signal       killed by a signal (SIGFPE, SIGSEGV, abort ...) or a stack
                  trace from a signal handler
     hang         did not end within the time limit
-    nan          exit 0 but "nan" or "inf" printed as a number in the log
+    nan          exit 0 but "nan" or "inf" in its log (not counted where the
+                 mutation itself was nan: the run may echo it) or in a file
+                 the run wrote
     other        non-zero exit without a FOAM FATAL message
 
 Results: DIR/results.csv (target, file, entry, mutation, class, exit code,
@@ -190,7 +192,7 @@ def bad_value(mutation, current):
     return MUTATIONS[mutation]
 
 
-def classify(rc, hung, logtext, keyword):
+def classify(rc, hung, logtext, keyword, mutation="", written=()):
     """The class of one run (see the module's doc) and a short reason."""
     if hung:
         return "hang", ""
@@ -215,16 +217,43 @@ def classify(rc, hung, logtext, keyword):
     if s:
         return "signal", s.group(0)
     if rc == 0:
-        n = NONFINITE.search(logtext)
+        # a 'nan' the run only echoes (e.g. "Unknown function type nan")
+        # is not a result
+        n = NONFINITE.search(logtext) if mutation != "nan" else None
         if n:
             line = logtext[logtext.rfind("\n", 0, n.start()) + 1:logtext.find("\n", n.end())]
             return "nan", line.strip()
+        for path in written:
+            return "nan", "in " + path
         return "ok", ""
     if not fatal:
         return "other", "exit %d" % rc
     if keyword in fatal:
         return "named", first
     return "unnamed", first
+
+
+def nonfinite_outputs(run, t0, mutated):
+    """Files the run wrote (time directories, postProcessing, lagrangian)
+    that hold a non-finite number; logs and the mutated file left out."""
+    found = []
+    for root, dirs, files in os.walk(run):
+        for f in files:
+            p = os.path.join(root, f)
+            rel = os.path.relpath(p, run)
+            if f.startswith("log.") or rel == mutated or f.endswith((".pt", ".png")):
+                continue
+            try:
+                if os.path.getmtime(p) < t0 or os.path.getsize(p) > 4 << 20:
+                    continue
+                with open(p, errors="replace") as fh:
+                    text = fh.read()
+            except OSError:
+                continue
+            body = text[text.find("}", text.find("FoamFile")) + 1:] if "FoamFile" in text else text
+            if NONFINITE.search(body):
+                found.append(rel)
+    return found
 
 
 def load_targets(paths):
@@ -314,10 +343,12 @@ def main():
         shutil.copytree(os.path.join(tdir, "base"), run, symlinks=True)
         shown = mutate(os.path.join(run, fname), e, m)
         log = os.path.join(run, "log.run")
+        t0 = time.time()
         rc, secs, hung = bash(t["run"], run, timeout=t.get("timeout", a.timeout), log=log)
         with open(log, errors="replace") as f:
             text = f.read()
-        cls, why = classify(rc, hung, text, e[0].split("/")[-1])
+        cls, why = classify(rc, hung, text, e[0].split("/")[-1], m,
+                            nonfinite_outputs(run, t0, fname) if rc == 0 else ())
         result = (t["name"], fname, e[0], m, shown, cls, rc, round(secs, 2), why[:160])
         if cls in ("ok", "named") and not a.keep:
             shutil.rmtree(run, ignore_errors=True)

@@ -34,7 +34,7 @@ noise        0.01;
 seed         1;
 printInterval 2;
 checkpointInterval 2;
-maxTrainTime 60;
+maxTrainTime 10;
 validation   { cases ("../cavity2"); interval 4; }
 DICT
 '''
