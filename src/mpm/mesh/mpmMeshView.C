@@ -670,34 +670,12 @@ Foam::scalar Foam::mpmMeshView::outside
 }
 
 
-void Foam::mpmMeshView::shapeFunctions
-(
-    const label c,
-    const vector& x,
-    shapeValues& sv
-) const
-{
-    evaluate(c, x, sv, true);
-}
-
-
-void Foam::mpmMeshView::shapeValuesOnly
-(
-    const label c,
-    const vector& x,
-    shapeValues& sv
-) const
-{
-    evaluate(c, x, sv, false);
-}
-
-
+template<bool gradients>
 void Foam::mpmMeshView::evaluate
 (
     const label c,
     const vector& x,
-    shapeValues& sv,
-    const bool gradients
+    shapeValues& sv
 ) const
 {
     const shapeType s = shapes_[c];
@@ -789,6 +767,28 @@ void Foam::mpmMeshView::evaluate
         sv.outside = max(sv.outside, scalar(1));
         if (sv.exitFace < 0) sv.exitFace = 0;
     }
+}
+
+
+void Foam::mpmMeshView::shapeFunctions
+(
+    const label c,
+    const vector& x,
+    shapeValues& sv
+) const
+{
+    evaluate<true>(c, x, sv);
+}
+
+
+void Foam::mpmMeshView::shapeValuesOnly
+(
+    const label c,
+    const vector& x,
+    shapeValues& sv
+) const
+{
+    evaluate<false>(c, x, sv);
 }
 
 
