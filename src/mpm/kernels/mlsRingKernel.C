@@ -278,7 +278,7 @@ void Foam::mlsRingKernel::computeDim
     {
         const label c = cells[p];
         const vector& xp = x[p];
-        mesh_.shapeFunctions(c, xp, sv);
+        mesh_.shapeValuesOnly(c, xp, sv);   // eta needs B only
         scalar xpa[D];
         for (label a = 0; a < D; ++a) xpa[a] = xp[ax[a]];
 
