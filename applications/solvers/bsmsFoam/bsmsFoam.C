@@ -30,8 +30,16 @@ Description
     gives a warning naming the field, the value, the cell and the range,
     once per field; the end of the log says how far each such field went.
 
+    Parallel runs (decomposePar, mpirun -np N bsmsFoam -parallel,
+    reconstructPar) give the serial run's predictions bit for bit: the
+    model sees the whole mesh's graph, so each step the ranks' fields are
+    gathered on the master (in the undecomposed cell order, by the
+    processors' cellProcAddressing), the master advances the model built
+    on the undecomposed mesh and scatters the prediction back (see
+    bsmsGatheredModel).  The model's cost is the serial run's.
+
 Usage
-    bsmsFoam [-case dir] [-model file] [-rangeWarning nStd]
+    bsmsFoam [-case dir] [-model file] [-rangeWarning nStd] [-parallel]
 
     The model (default constant/bsmsModel.pt, with its model dictionary
     constant/bsmsModelDict beside it, both written by bsmsTrain) can also be
@@ -45,7 +53,7 @@ Usage
 
 #include "fvCFD.H"
 #include "OSspecific.H"
-#include "bsmsSurrogateModel.H"
+#include "bsmsGatheredModel.H"
 #include "bsmsFieldIO.H"
 #include "dictionaryChecks.H"
 
@@ -60,7 +68,6 @@ int main(int argc, char *argv[])
     (
         "Advance a case with a trained BSMS-GNN model alone (no solver)"
     );
-    argList::noParallel();
     argList::addOption
     (
         "model",
@@ -99,11 +106,11 @@ int main(int argc, char *argv[])
         }
     }
     modelFile.expand();
-    if (!modelFile.isAbsolute()) modelFile = runTime.path()/modelFile;
+    if (!modelFile.isAbsolute()) modelFile = runTime.globalPath()/modelFile;
 
-    std::unique_ptr<bsmsSurrogateModel> model
+    std::unique_ptr<bsmsGatheredModel> model
     (
-        bsmsSurrogateModel::load(mesh, modelFile, controlDict, "bsmsModel")
+        new bsmsGatheredModel(mesh, modelFile, controlDict, "bsmsModel")
     );
     const bsmsModelSpec& spec = model->spec();
     Info<< "Model " << modelFile << ": " << spec.model << ", levels (nodes "
@@ -176,23 +183,40 @@ int main(int argc, char *argv[])
         );
     }
 
+    // This rank's state; the whole mesh's (global) on the model's rank
     std::vector<double> state
     (
         registryState(mesh, spec.inputFields, spec.inputComponents,
             controlDict, "bsmsModel")
     );
+    std::vector<double> global(model->gather(state));
 
     // The training range of the inputs: the start state, then each step's
-    bsmsInputRange range(model->inputRange(rangeWarning));
+    // (checked on the model's rank, on the whole mesh's state)
+    std::unique_ptr<bsmsInputRange> rangePtr
+    (
+        model->holdsModel()
+      ? new bsmsInputRange(model->model().inputRange(rangeWarning))
+      : nullptr
+    );
     auto checkRange = [&](const scalar t)
     {
-        for (const string& m : range.check(state, t))
+        if (!rangePtr) return;
+        for (const string& m : rangePtr->check(global, t))
         {
             WarningIn("bsmsFoam") << "Model " << modelFile.name() << ": "
                 << m.c_str() << endl;
         }
     };
-    if (!range.active())
+    auto rangeSummary = [&]()
+    {
+        if (!rangePtr) return;
+        for (const string& m : rangePtr->summary())
+        {
+            Info<< "Model " << modelFile.name() << ": " << m.c_str() << nl;
+        }
+    };
+    if (rangePtr && !rangePtr->active())
     {
         WarningInFunction << "Model " << modelFile << " holds no input"
             << " statistics (never trained?): its inputs are not checked"
@@ -209,8 +233,8 @@ int main(int argc, char *argv[])
     {
         ++runTime;
         const auto ts = std::chrono::steady_clock::now();
-        std::vector<double> next(state);
-        model->advance(next);
+        std::vector<double> next(global);
+        const bool finite = model->advance(next);
         const double sec = std::chrono::duration<double>
         (
             std::chrono::steady_clock::now() - ts
@@ -218,14 +242,11 @@ int main(int argc, char *argv[])
         modelSeconds += sec;
         ++nModelSteps;
 
-        if (!allFinite(next))
+        if (!finite)
         {
             const scalar tBad = runTime.value();
             runTime.setTime(runTime.value() - spec.deltaT, runTime.timeIndex());
-            for (const string& m : range.summary())
-            {
-                Info<< "Model " << modelFile.name() << ": " << m.c_str() << nl;
-            }
+            rangeSummary();
             if (nModelSteps > 1)
             {
                 setFields(mesh, state, spec.inputFields, spec.inputComponents,
@@ -241,8 +262,9 @@ int main(int argc, char *argv[])
                 << (nModelSteps > 1 ? "" : ", whose files are left as they are")
                 << exit(FatalError);
         }
-        state.swap(next);
+        global.swap(next);
         checkRange(runTime.value());
+        state = model->scatter(global);
         setFields(mesh, state, spec.inputFields, spec.inputComponents,
             spec.outputFields);
         if (phi.valid())
@@ -270,10 +292,7 @@ int main(int argc, char *argv[])
         wall/max(simulated, SMALL)
     );
     Info<< nl << buf << nl;
-    for (const string& m : range.summary())
-    {
-        Info<< "Model " << modelFile.name() << ": " << m.c_str() << nl;
-    }
+    rangeSummary();
     Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
         << "  ClockTime = " << runTime.elapsedClockTime() << " s"
         << nl << nl << "End" << nl << endl;

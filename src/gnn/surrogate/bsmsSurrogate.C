@@ -28,6 +28,7 @@ namespace functionObjects
 
 void Foam::functionObjects::bsmsSurrogate::checkRange()
 {
+    if (!range_) return;
     for (const string& m : range_->check(state_, modelTime_))
     {
         WarningInFunction
@@ -38,13 +39,7 @@ void Foam::functionObjects::bsmsSurrogate::checkRange()
 
 void Foam::functionObjects::bsmsSurrogate::start()
 {
-    if (Pstream::parRun())
-    {
-        FatalErrorInFunction
-            << type() << ' ' << name() << ": the model runs on the whole"
-            << " mesh's graph; run the case serially" << exit(FatalError);
-    }
-    model_ = bsmsSurrogateModel::load(mesh_, modelFile_, dict_, "model");
+    model_.reset(new bsmsGatheredModel(mesh_, modelFile_, dict_, "model"));
     const bsmsModelSpec& spec = model_->spec();
 
     // From the run's start: function objects first execute after the first
@@ -54,24 +49,36 @@ void Foam::functionObjects::bsmsSurrogate::start()
     if (startTime_ <= t0 + 1e-9*max(mag(t0), scalar(1)))
     {
         labelList comps(spec.inputComponents);
-        state_ = readFieldState
+        state_ = model_->gather
         (
-            time_.path()/time_.timeName(t0), spec.inputFields,
-            mesh_.nCells(), comps, dict_, "model"
+            readFieldState
+            (
+                time_.path()/time_.timeName(t0), spec.inputFields,
+                mesh_.nCells(), comps, dict_, "model"
+            )
         );
         modelTime_ = t0;
     }
     else
     {
-        state_ = registryState
+        state_ = model_->gather
         (
-            mesh_, spec.inputFields, spec.inputComponents, dict_, "model"
+            registryState
+            (
+                mesh_, spec.inputFields, spec.inputComponents, dict_, "model"
+            )
         );
         modelTime_ = time_.value();
     }
     nModelSteps_ = 0;
     modelSeconds_ = 0;
-    range_.reset(new bsmsInputRange(model_->inputRange(rangeWarning_)));
+    if (model_->holdsModel())
+    {
+        range_.reset
+        (
+            new bsmsInputRange(model_->model().inputRange(rangeWarning_))
+        );
+    }
     checkRange();
 
     // The prediction and error fields of the outputs
@@ -107,6 +114,7 @@ void Foam::functionObjects::bsmsSurrogate::start()
     (
         time_.globalPath()/"postProcessing"/name()/time_.timeName()
     );
+    if (!Pstream::master()) return;
     mkDir(dir);
     file_.reset(new OFstream(dir/"bsmsSurrogate.dat"));
     file_() << "# model " << modelFile_ << ", deltaT " << spec.deltaT
@@ -127,13 +135,22 @@ Foam::List<Foam::scalar> Foam::functionObjects::bsmsSurrogate::rmse() const
     const bsmsModelSpec& spec = model_->spec();
     const std::vector<double> solver
     (
-        registryState
+        model_->gather
         (
-            mesh_, spec.inputFields, spec.inputComponents, dict_, "model"
+            registryState
+            (
+                mesh_, spec.inputFields, spec.inputComponents, dict_, "model"
+            )
         )
     );
     const label nS = spec.nState();
     List<scalar> r(spec.outputFields.size(), scalar(0));
+    if (!model_->holdsModel())
+    {
+        Pstream::scatter(r);
+        return r;
+    }
+    const label nCells = model_->nGlobalCells();
     label o = 0;
     forAll(spec.inputFields, i)
     {
@@ -145,19 +162,20 @@ Foam::List<Foam::scalar> Foam::functionObjects::bsmsSurrogate::rmse() const
             label nUsed = 0;
             for (label c = 0; c < nc; ++c)
             {
-                if (!model_->used(o + c)) continue;
+                if (!model_->model().used(o + c)) continue;
                 ++nUsed;
-                for (label k = 0; k < mesh_.nCells(); ++k)
+                for (label k = 0; k < nCells; ++k)
                 {
                     const std::size_t q = std::size_t(k)*nS + o + c;
                     const double d = state_[q] - solver[q];
                     sum += d*d;
                 }
             }
-            r[j] = std::sqrt(sum/(double(mesh_.nCells())*max(nUsed, 1)));
+            r[j] = std::sqrt(sum/(double(nCells)*max(nUsed, 1)));
         }
         o += nc;
     }
+    if (Pstream::parRun()) Pstream::scatter(r);
     return r;
 }
 
@@ -167,7 +185,7 @@ void Foam::functionObjects::bsmsSurrogate::updateFields()
     const bsmsModelSpec& spec = model_->spec();
     setFields
     (
-        mesh_, state_, spec.inputFields, spec.inputComponents,
+        mesh_, model_->scatter(state_), spec.inputFields, spec.inputComponents,
         spec.outputFields, "_gnn"
     );
     forAll(spec.inputFields, i)
@@ -258,7 +276,7 @@ bool Foam::functionObjects::bsmsSurrogate::execute()
     {
         const auto t0 = std::chrono::steady_clock::now();
         std::vector<double> next(state_);
-        model_->advance(next);
+        const bool finite = model_->advance(next);
         const double sec = std::chrono::duration<double>
         (
             std::chrono::steady_clock::now() - t0
@@ -266,7 +284,7 @@ bool Foam::functionObjects::bsmsSurrogate::execute()
         modelSeconds_ += sec;
         modelTime_ += spec.deltaT;
         ++nModelSteps_;
-        if (!allFinite(next))
+        if (!finite)
         {
             WarningInFunction
                 << type() << ' ' << name() << ": the model predicted"
@@ -275,12 +293,18 @@ bool Foam::functionObjects::bsmsSurrogate::execute()
                 << " keeps its last good state (t = "
                 << modelTime_ - spec.deltaT << "); the solver goes on"
                 << endl;
-            for (const string& m : range_->summary())
+            if (range_)
             {
-                Info<< type() << ' ' << name() << ": " << m.c_str() << nl;
+                for (const string& m : range_->summary())
+                {
+                    Info<< type() << ' ' << name() << ": " << m.c_str() << nl;
+                }
             }
-            file_() << "# non-finite prediction at t = " << modelTime_
-                << "; rollout stopped" << endl;
+            if (file_.valid())
+            {
+                file_() << "# non-finite prediction at t = " << modelTime_
+                    << "; rollout stopped" << endl;
+            }
             // The state kept is the last good one: so are its time and step
             modelTime_ -= spec.deltaT;
             --nModelSteps_;
@@ -295,14 +319,17 @@ bool Foam::functionObjects::bsmsSurrogate::execute()
         {
             const List<scalar> r(rmse());
             char buf[64];
-            file_() << time_.timeName() << ' ' << nModelSteps_;
-            for (const scalar e : r)
+            if (file_.valid())
             {
-                std::snprintf(buf, sizeof(buf), " %.6e", e);
-                file_() << buf;
+                file_() << time_.timeName() << ' ' << nModelSteps_;
+                for (const scalar e : r)
+                {
+                    std::snprintf(buf, sizeof(buf), " %.6e", e);
+                    file_() << buf;
+                }
+                std::snprintf(buf, sizeof(buf), " %.6e", sec);
+                file_() << buf << endl;
             }
-            std::snprintf(buf, sizeof(buf), " %.6e", sec);
-            file_() << buf << endl;
             Info<< type() << ' ' << name() << ": model step "
                 << nModelSteps_ << ", RMSE " << spec.outputFields << ' '
                 << r << nl;
