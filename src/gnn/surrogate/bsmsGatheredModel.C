@@ -45,7 +45,7 @@ void Foam::bsmsGatheredModel::readAddressing()
         IOobject::NO_WRITE,
         false
     );
-    if (!isFile(io.objectPath()))
+    if (!io.typeHeaderOk<labelIOList>(true))
     {
         FatalErrorInFunction
             << "The processor mesh lacks " << io.objectPath() << ", which"
