@@ -19,13 +19,21 @@ Description
     initial fields p, U and rho (or T), e.g. from setFields.  Writes rho, U,
     p, T, Mach and schlieren; restarts from any written time.
 
+    In parallel (decomposePar with method simple or hierarchical, then
+    mpirun -np N shockMpmFoam -parallel) each rank holds a box of the
+    lattice; WENO ghost cells come from the neighbour ranks at each flux
+    evaluation and the time step is the minimum over the ranks, so the
+    explicit stepper gives the serial fields bit for bit.  The
+    semiImplicit stepper is serial only (FatalIOError in parallel).
+
 Usage
-    shockMpmFoam [-case dir]
+    shockMpmFoam [-case dir] [-parallel]
 
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
 #include "gasDynamics.H"
+#include "IFstream.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -36,11 +44,38 @@ int main(int argc, char *argv[])
         "WENO-LLF compressible flow (explicit or semi-implicit) on"
         " Cartesian blockMesh meshes"
     );
-    argList::noParallel();
 
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createMesh.H"
+
+    // Parallel: the lattice lines must cross processor boundaries whole,
+    // which box decompositions guarantee
+    if (Pstream::parRun())
+    {
+        const fileName dictPath
+        (
+            runTime.globalPath()/runTime.system()/"decomposeParDict"
+        );
+        IFstream is(dictPath);
+        if (!is.good())
+        {
+            FatalErrorInFunction
+                << "Cannot read " << dictPath << " to check the"
+                << " decomposition method (simple or hierarchical needed)"
+                << exit(FatalError);
+        }
+        const dictionary decompDict(is);
+        const word method(decompDict.get<word>("method"));
+        if (method != "simple" && method != "hierarchical")
+        {
+            FatalIOErrorInFunction(decompDict)
+                << "system/decomposeParDict: method " << method
+                << " is not a decomposition into boxes." << nl
+                << "    allowed for shockMpmFoam -parallel: simple,"
+                << " hierarchical" << exit(FatalIOError);
+        }
+    }
 
     gasDynamics gas(mesh);
 

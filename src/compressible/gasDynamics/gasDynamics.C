@@ -8,6 +8,8 @@
 #include "fvc.H"
 #include "gasLimits.H"
 #include "OStringStream.H"
+#include "processorGhosts.H"
+#include "processorPolyPatch.H"
 
 using namespace Foam::dictionaryChecks;
 
@@ -196,6 +198,16 @@ Foam::gasDynamics::gasDynamics(const fvMesh& mesh)
             {
                 if (bcs_.set(pi)) continue;
                 const polyPatch& pp = patches[pi];
+                if (isA<processorPolyPatch>(pp))
+                {
+                    // Ghosts from the neighbour rank (parallel runs)
+                    bcs_.set
+                    (
+                        pi,
+                        new gasBoundaries::processorGhosts(pp.name(), gas_)
+                    );
+                    continue;
+                }
                 gasBoundary::primitiveState st{0, Zero, 0};
                 const scalarField& pb = p_.boundaryField()[pi];
                 const scalarField& rb = rho_.boundaryField()[pi];
@@ -245,6 +257,16 @@ Foam::gasDynamics::gasDynamics(const fvMesh& mesh)
 
     op_.reset(new eulerOperator(view_, gas_, scheme_(), bcs_));
     stepper_ = gasStepper::New(gasDict, op_());
+    if (Pstream::parRun() && gasDict.get<word>("stepper") != "explicit")
+    {
+        FatalIOErrorInFunction(gasDict)
+            << "stepper " << gasDict.get<word>("stepper")
+            << " does not run in parallel yet (its pressure system is not"
+            << " distributed)" << nl
+            << "    allowed in parallel: stepper explicit; run "
+            << gasDict.get<word>("stepper") << " serially"
+            << exit(FatalIOError);
+    }
 
     corners_.reset
     (
@@ -330,7 +352,9 @@ Foam::scalar Foam::gasDynamics::stableDeltaT() const
 {
     word limiter;
     scalar speed = 0;
-    return min(stepper_->stableDeltaT(U_, CFL_, speed, limiter), maxDeltaT_);
+    scalar dt = stepper_->stableDeltaT(U_, CFL_, speed, limiter);
+    reduce(dt, minOp<scalar>());
+    return min(dt, maxDeltaT_);
 }
 
 
@@ -339,6 +363,12 @@ void Foam::gasDynamics::step(Time& runTime)
     word limiter;
     scalar speed = 0;
     scalar dt = stepper_->stableDeltaT(U_, CFL_, speed, limiter);
+    if (Pstream::parRun())
+    {
+        // Every rank takes the same step: the serial one, min over all cells
+        reduce(dt, minOp<scalar>());
+        reduce(speed, maxOp<scalar>());
+    }
     dt = min(dt, maxDeltaT_);
     if (!(dt >= minDeltaT()))
     {
@@ -378,13 +408,15 @@ void Foam::gasDynamics::step(Time& runTime)
             toFields();
             updateDerived();
             runTime.writeNow();
-            const label celli = view_.cellAt()[rep.failedCell];
+            const label celli =
+                rep.failedCell >= 0 ? view_.cellAt()[rep.failedCell] : -1;
             FatalErrorInFunction
                 << "The gas state failed in the step from time "
                 << runTime.timeName() << " (dt " << dt << ", after "
                 << tries << " halvings): " << rep.failure.c_str() << nl
                 << "    in cell " << celli << " at "
-                << mesh_.cellCentres()[celli] << nl;
+                << (celli >= 0 ? mesh_.cellCentres()[celli] : vector::zero)
+                << " (on processor " << Pstream::myProcNo() << ")" << nl;
             if (rep.explicitFallbacks > 0)
             {
                 FatalError
@@ -399,7 +431,8 @@ void Foam::gasDynamics::step(Time& runTime)
         ++nRetries_;
         dt *= 0.5;
         Info<< "    step failed (" << rep.failure.c_str() << " in cell "
-            << view_.cellAt()[rep.failedCell] << "); retrying with dt "
+            << (rep.failedCell >= 0 ? view_.cellAt()[rep.failedCell] : -1)
+            << "); retrying with dt "
             << dt << nl;
         rep = gasStepper::report();
     }

@@ -304,6 +304,9 @@ void Foam::gasDynamics::totals
         momentum += vector(U_.q[1][i], U_.q[2][i], U_.q[3][i]);
         energy += U_.q[4][i];
     }
+    reduce(mass, sumOp<scalar>());
+    reduce(momentum, sumOp<vector>());
+    reduce(energy, sumOp<scalar>());
     mass *= V;
     momentum *= V;
     energy *= V;

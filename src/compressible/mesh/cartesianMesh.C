@@ -5,6 +5,10 @@
 
 #include "cartesianMesh.H"
 #include "boundBox.H"
+#include "processorPolyPatch.H"
+#include "PstreamBuffers.H"
+#include "UIPstream.H"
+#include "UOPstream.H"
 #include <algorithm>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -56,6 +60,14 @@ void Foam::cartesianMesh::build()
     for (label d = 0; d < 3; ++d)
     {
         dx_[d] = bb0.span()[d];
+    }
+    if (Pstream::parRun())
+    {
+        // Every rank computes with the master's cell size, so that the
+        // arithmetic is the serial run's (whose first cell is the master's)
+        vector dxv(dx_[0], dx_[1], dx_[2]);
+        Pstream::scatter(dxv);
+        for (label d = 0; d < 3; ++d) dx_[d] = dxv[d];
     }
     const scalar h = min(min(dx_[0], dx_[1]), dx_[2]);
     const scalar tol = 1e-6*h;
@@ -221,6 +233,95 @@ void Foam::cartesianMesh::build()
 }
 
 
+void Foam::cartesianMesh::buildProcessorEnds()
+{
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+    const label nInternal = mesh_.nInternalFaces();
+    std::vector<procEnd> endAt
+    (
+        mesh_.nFaces() - nInternal, procEnd{-1, -1, false}
+    );
+    for (label d = 0; d < 3; ++d)
+    {
+        for (size_t si = 0; si < segments_[d].size(); ++si)
+        {
+            const segment& s = segments_[d][si];
+            endAt[s.lowFace - nInternal] = procEnd{d, label(si), false};
+            endAt[s.highFace - nInternal] = procEnd{d, label(si), true};
+        }
+    }
+    forAll(patches, pi)
+    {
+        if (!isA<processorPolyPatch>(patches[pi])) continue;
+        const polyPatch& pp = patches[pi];
+        procPatches_.push_back(pi);
+        procSlot0_.push_back(nGhostSlots_);
+        procEnds_.emplace_back();
+        forAll(pp, j)
+        {
+            const procEnd& e = endAt[pp.start() + j - nInternal];
+            if (e.d < 0)
+            {
+                FatalErrorInFunction
+                    << "Processor face " << pp.start() + j << " of patch "
+                    << pp.name() << " is not the end of a lattice line"
+                    << exit(FatalError);
+            }
+            procEnds_.back().push_back(e);
+            segment& s = segments_[e.d][e.seg];
+            (e.high ? s.highGhost : s.lowGhost) = nGhostSlots_ + j;
+        }
+        nGhostSlots_ += pp.size();
+    }
+}
+
+
+void Foam::cartesianMesh::exchangeGhosts
+(
+    const std::vector<double> (&q)[5],
+    label depth,
+    std::vector<double>& ghost
+) const
+{
+    if (!Pstream::parRun()) return;
+    ghost.resize(nGhostSlots_*depth*5);
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    for (size_t p = 0; p < procPatches_.size(); ++p)
+    {
+        const auto& pp =
+            refCast<const processorPolyPatch>(patches[procPatches_[p]]);
+        const auto& ends = procEnds_[p];
+        List<scalar> send(label(ends.size())*depth*5);
+        label n = 0;
+        for (const procEnd& e : ends)
+        {
+            const segment& s = segments_[e.d][e.seg];
+            const label st = stride_[e.d];
+            for (label k = 0; k < depth; ++k)
+            {
+                const label m = e.high ? s.length - 1 - k : k;
+                const label idx = s.start + m*st;
+                for (int c = 0; c < 5; ++c) send[n++] = q[c][idx];
+            }
+        }
+        UOPstream toNbr(pp.neighbProcNo(), pBufs);
+        toNbr << send;
+    }
+    pBufs.finishedSends();
+    for (size_t p = 0; p < procPatches_.size(); ++p)
+    {
+        const auto& pp =
+            refCast<const processorPolyPatch>(patches[procPatches_[p]]);
+        UIPstream fromNbr(pp.neighbProcNo(), pBufs);
+        List<scalar> recv(fromNbr);
+        const label off = procSlot0_[p]*depth*5;
+        forAll(recv, n) ghost[off + n] = recv[n];
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::cartesianMesh::cartesianMesh(const fvMesh& mesh)
@@ -228,6 +329,7 @@ Foam::cartesianMesh::cartesianMesh(const fvMesh& mesh)
     mesh_(mesh)
 {
     build();
+    buildProcessorEnds();
 
     label nSeg = 0;
     for (label d = 0; d < 3; ++d) nSeg += segments_[d].size();

@@ -30,6 +30,23 @@ Foam::eulerOperator::eulerOperator
         for (const auto& s : mesh_.segments(d))
         {
             maxL = std::max(maxL, s.length);
+            if
+            (
+                s.length < G_
+             && (s.lowGhost >= 0 || s.highGhost >= 0)
+            )
+            {
+                FatalErrorInFunction
+                    << "A subdomain of this parallel run is "
+                    << s.length << " cells thick along " << "xyz"[d]
+                    << " (line at cell " << mesh_.cellAt()[s.start]
+                    << "); the scheme " << scheme_.type() << " needs "
+                    << G_ << " cells on each side of a processor boundary."
+                    << nl << "    Decompose with fewer subdomains along "
+                    << "xyz"[d] << " (method simple or hierarchical, n in"
+                    << " system/decomposeParDict) so that each has at least "
+                    << G_ << " cells along it" << exit(FatalError);
+            }
             if (s.length < G_)
             {
                 const bool periodic =
@@ -78,9 +95,28 @@ Foam::gasLine Foam::eulerOperator::gather
 
     // Short non-periodic lines: the mirror/extrapolation partners beyond
     // the line repeat its last cell
-    bcs_[s.lowPatch].fillGhosts(line, false);
-    bcs_[s.highPatch].fillGhosts(line, true);
+    if (s.lowGhost >= 0) processorGhosts(line, s.lowGhost, false);
+    else bcs_[s.lowPatch].fillGhosts(line, false);
+    if (s.highGhost >= 0) processorGhosts(line, s.highGhost, true);
+    else bcs_[s.highPatch].fillGhosts(line, true);
     return line;
+}
+
+
+void Foam::eulerOperator::processorGhosts
+(
+    const gasLine& line,
+    label slot,
+    bool high
+) const
+{
+    const label G = line.G, L = line.L;
+    for (label k = 0; k < G; ++k)
+    {
+        const label g = high ? G + L + k : G - 1 - k;
+        const double* src = ghost_.data() + (slot*G_ + k)*5;
+        for (int c = 0; c < 5; ++c) line.q[c][g] = src[c];
+    }
 }
 
 
@@ -123,6 +159,10 @@ void Foam::eulerOperator::wallFace(label d, label f)
 
 void Foam::eulerOperator::computeFluxes(const gasState& U, bool advective)
 {
+    if (Pstream::parRun())
+    {
+        mesh_.exchangeGhosts(U.q, G_, ghost_);
+    }
     for (label d = 0; d < 3; ++d)
     {
         if (!mesh_.active(d)) continue;

@@ -136,6 +136,17 @@ bool Foam::gasStepper::stage
         }
     }
 
+    if (Pstream::parRun())
+    {
+        // All ranks agree whether the stage failed, so all retry together
+        bool ok = bad.empty();
+        reduce(ok, andOp<bool>());
+        if (!ok && bad.empty())
+        {
+            rep.failure = "a state failed on another processor";
+            return false;
+        }
+    }
     if (!bad.empty())
     {
         rep.failedCell = bad.front();
