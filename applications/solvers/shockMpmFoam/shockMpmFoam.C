@@ -23,8 +23,9 @@ Description
     mpirun -np N shockMpmFoam -parallel) each rank holds a box of the
     lattice; WENO ghost cells come from the neighbour ranks at each flux
     evaluation and the time step is the minimum over the ranks, so the
-    explicit stepper gives the serial fields bit for bit.  The
-    semiImplicit stepper is serial only (FatalIOError in parallel).
+    explicit stepper gives the serial fields bit for bit; the semiImplicit
+    stepper's pressure system couples across processor faces and its CG
+    sums over the ranks, so it agrees with serial to round-off.
 
 Usage
     shockMpmFoam [-case dir] [-parallel]

@@ -23,7 +23,7 @@ Foam::scalar Foam::gasBoundaries::processorGhosts::faceVelocity
 {
     FatalErrorInFunction
         << "Processor patch " << patchName_ << ": no boundary velocity"
-        << " (the semiImplicit stepper does not run in parallel)"
+       
         << exit(FatalError);
     return 0;
 }

@@ -257,16 +257,6 @@ Foam::gasDynamics::gasDynamics(const fvMesh& mesh)
 
     op_.reset(new eulerOperator(view_, gas_, scheme_(), bcs_));
     stepper_ = gasStepper::New(gasDict, op_());
-    if (Pstream::parRun() && gasDict.get<word>("stepper") != "explicit")
-    {
-        FatalIOErrorInFunction(gasDict)
-            << "stepper " << gasDict.get<word>("stepper")
-            << " does not run in parallel yet (its pressure system is not"
-            << " distributed)" << nl
-            << "    allowed in parallel: stepper explicit; run "
-            << gasDict.get<word>("stepper") << " serially"
-            << exit(FatalIOError);
-    }
 
     corners_.reset
     (

@@ -322,6 +322,47 @@ void Foam::cartesianMesh::exchangeGhosts
 }
 
 
+Foam::label Foam::cartesianMesh::slotCell(label j) const
+{
+    label p = label(procSlot0_.size()) - 1;
+    while (procSlot0_[p] > j) --p;
+    const procEnd& e = procEnds_[p][j - procSlot0_[p]];
+    const segment& s = segments_[e.d][e.seg];
+    return s.start + (e.high ? s.length - 1 : 0)*stride_[e.d];
+}
+
+
+void Foam::cartesianMesh::exchangeSlots
+(
+    const std::vector<double>& mine,
+    std::vector<double>& theirs
+) const
+{
+    theirs.resize(nGhostSlots_);
+    if (!Pstream::parRun()) return;
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    for (size_t p = 0; p < procPatches_.size(); ++p)
+    {
+        const auto& pp =
+            refCast<const processorPolyPatch>(patches[procPatches_[p]]);
+        List<scalar> send(pp.size());
+        forAll(send, j) send[j] = mine[procSlot0_[p] + j];
+        UOPstream toNbr(pp.neighbProcNo(), pBufs);
+        toNbr << send;
+    }
+    pBufs.finishedSends();
+    for (size_t p = 0; p < procPatches_.size(); ++p)
+    {
+        const auto& pp =
+            refCast<const processorPolyPatch>(patches[procPatches_[p]]);
+        UIPstream fromNbr(pp.neighbProcNo(), pBufs);
+        List<scalar> recv(fromNbr);
+        forAll(recv, j) theirs[procSlot0_[p] + j] = recv[j];
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::cartesianMesh::cartesianMesh(const fvMesh& mesh)

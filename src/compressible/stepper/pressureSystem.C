@@ -4,6 +4,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "pressureSystem.H"
+#include "cartesianMesh.H"
+#include "PstreamReduceOps.H"
 #include <cmath>
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -15,6 +17,9 @@ void Foam::pressureSystem::reset(label n)
     owner.clear();
     neighbour.clear();
     coeff.clear();
+    remoteOwner.clear();
+    remoteSlot.clear();
+    remoteCoeff.clear();
 }
 
 
@@ -34,6 +39,26 @@ void Foam::pressureSystem::multiply
         y[i] -= coeff[f]*x[j];
         y[j] -= coeff[f]*x[i];
     }
+    if (mesh && Pstream::parRun())
+    {
+        mine_.resize(slotUnknown.size());
+        for (size_t j = 0; j < slotUnknown.size(); ++j)
+        {
+            mine_[j] = x[slotUnknown[j]];
+        }
+        mesh->exchangeSlots(mine_, theirs_);
+        for (size_t f = 0; f < remoteCoeff.size(); ++f)
+        {
+            y[remoteOwner[f]] -= remoteCoeff[f]*theirs_[remoteSlot[f]];
+        }
+    }
+}
+
+
+double Foam::pressureSystem::gSum(double x)
+{
+    if (Pstream::parRun()) reduce(x, sumOp<double>());
+    return x;
 }
 
 
@@ -52,7 +77,7 @@ Foam::label Foam::pressureSystem::solve
 
     double bNorm = 0;
     for (label i = 0; i < n; ++i) bNorm += source[i]*source[i];
-    bNorm = std::sqrt(bNorm);
+    bNorm = std::sqrt(gSum(bNorm));
     if (bNorm == 0)
     {
         x.assign(n, 0.0);
@@ -70,6 +95,8 @@ Foam::label Foam::pressureSystem::solve
         rz += r_[i]*z_[i];
         rr += r_[i]*r_[i];
     }
+    rz = gSum(rz);
+    rr = gSum(rr);
 
     label iter = 0;
     while (std::sqrt(rr) > tol*bNorm && iter < maxIter)
@@ -77,6 +104,7 @@ Foam::label Foam::pressureSystem::solve
         multiply(p_, Ap_);
         double pAp = 0;
         for (label i = 0; i < n; ++i) pAp += p_[i]*Ap_[i];
+        pAp = gSum(pAp);
         if (!(pAp > 0) || !std::isfinite(pAp)) break;  // breakdown
         const double alpha = rz/pAp;
         double rzNew = 0;
@@ -89,6 +117,8 @@ Foam::label Foam::pressureSystem::solve
             rzNew += r_[i]*z_[i];
             rr += r_[i]*r_[i];
         }
+        rzNew = gSum(rzNew);
+        rr = gSum(rr);
         const double beta = rzNew/rz;
         rz = rzNew;
         for (label i = 0; i < n; ++i) p_[i] = z_[i] + beta*p_[i];

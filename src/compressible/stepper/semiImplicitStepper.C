@@ -46,6 +46,16 @@ Foam::gasSteppers::semiImplicitStepper::semiImplicitStepper
         unknownOf_[cells_[k]] = label(k);
     }
     p_.assign(cells_.size(), 0.0);
+    if (Pstream::parRun())
+    {
+        // Couplings across processor faces: the unknown next to each slot
+        sys_.mesh = &mesh_;
+        sys_.slotUnknown.resize(mesh_.nGhostSlots());
+        for (label j = 0; j < mesh_.nGhostSlots(); ++j)
+        {
+            sys_.slotUnknown[j] = unknownOf_[mesh_.slotCell(j)];
+        }
+    }
     for (label d = 0; d < 3; ++d)
     {
         if (!mesh_.active(d)) continue;
@@ -75,6 +85,16 @@ Foam::scalar Foam::gasSteppers::semiImplicitStepper::stableDeltaT
           + U.q[2][i]*U.q[2][i] + U.q[3][i]*U.q[3][i])/rho);
     };
 
+    // Parallel: the neighbour ranks' cells next to processor faces
+    std::vector<double> gU;
+    if (Pstream::parRun()) mesh_.exchangeGhosts(U.q, 1, gU);
+    auto ghostPressure = [&](label slot)
+    {
+        const double* q = gU.data() + 5*slot;
+        return (gamma_ - 1)
+           *(q[4] - 0.5*(q[1]*q[1] + q[2]*q[2] + q[3]*q[3])/q[0]);
+    };
+
     scalar rate = 0;
     scalar rateU = 0;
     speed = 0;
@@ -94,14 +114,35 @@ Foam::scalar Foam::gasSteppers::semiImplicitStepper::stableDeltaT
             // Pressure difference across the cell (one-sided at ends)
             const label st = mesh_.stride(d);
             const label lo = i - st, hi = i + st;
-            const bool hasLo = lo >= 0 && cellAt[lo] >= 0
+            bool hasLo = lo >= 0 && cellAt[lo] >= 0
                 && mesh_.lowFaceOf(d)[lo] + 1 == mesh_.lowFaceOf(d)[i];
-            const bool hasHi = hi < nLat && cellAt[hi] >= 0
+            bool hasHi = hi < nLat && cellAt[hi] >= 0
                 && mesh_.lowFaceOf(d)[i] + 1 == mesh_.lowFaceOf(d)[hi];
+            double pLo = hasLo ? pressure(lo) : 0;
+            double pHi = hasHi ? pressure(hi) : 0;
+            if (Pstream::parRun() && !(hasLo && hasHi))
+            {
+                const cartesianMesh::segment& sg =
+                    mesh_.segmentOfFace(d, mesh_.lowFaceOf(d)[i]);
+                if (!hasLo && i == sg.start && sg.lowGhost >= 0)
+                {
+                    hasLo = true;
+                    pLo = ghostPressure(sg.lowGhost);
+                }
+                if
+                (
+                    !hasHi && i == sg.start + (sg.length - 1)*st
+                 && sg.highGhost >= 0
+                )
+                {
+                    hasHi = true;
+                    pHi = ghostPressure(sg.highGhost);
+                }
+            }
             double dp = 0;
-            if (hasLo && hasHi) dp = 0.5*(pressure(hi) - pressure(lo));
-            else if (hasHi) dp = pressure(hi) - pressure(i);
-            else if (hasLo) dp = pressure(i) - pressure(lo);
+            if (hasLo && hasHi) dp = 0.5*(pHi - pLo);
+            else if (hasHi) dp = pHi - pressure(i);
+            else if (hasLo) dp = pressure(i) - pLo;
             rp += std::abs(dp)/(rho*mesh_.dx(d)*mesh_.dx(d));
         }
         speed = std::max(speed, std::sqrt(u2));
@@ -137,6 +178,10 @@ bool Foam::gasSteppers::semiImplicitStepper::advance
         return (gamma_ - 1)*(S.q[4][i] - 0.5*(S.q[1][i]*S.q[1][i]
           + S.q[2][i]*S.q[2][i] + S.q[3][i]*S.q[3][i])/rho);
     };
+
+    // Parallel: the neighbour ranks' advected cells at processor faces
+    std::vector<double> gS;
+    if (Pstream::parRun()) mesh_.exchangeGhosts(Ustar_.q, 1, gS);
 
     // 2.-3. (3.22) with (3.21): diagonal and source of each cell
     sys_.reset(n);
@@ -188,11 +233,58 @@ bool Foam::gasSteppers::semiImplicitStepper::advance
                 );
             }
 
+            // A processor face: the neighbour rank's cell is one side
+            auto coupleGhost = [&](label f, label slot, label i, bool low)
+            {
+                const double* g = gS.data() + 5*slot;
+                const double rhoG = g[0], uG = g[1 + d]/g[0];
+                const double rhoI = Ustar_.q[0][i];
+                const double uI = Ustar_.q[1 + d][i]/rhoI;
+                const double rhoF =
+                    low ? 0.5*(rhoG + rhoI) : 0.5*(rhoI + rhoG);
+                const double uS = low ? 0.5*(uG + uI) : 0.5*(uI + uG);
+                rhoF_[d][f] = rhoF;
+                uStarF_[d][f] = uS;
+                const label k = unknownOf_[i];
+                sys_.coupleRemote(k, slot, A/(rhoF*dx));
+                if (low) sys_.source[k] += A*uS/dt;
+                else sys_.source[k] -= A*uS/dt;
+            };
+
             const label first = s.start;
             const label last = s.start + (s.length - 1)*st;
             if (periodic)
             {
                 coupleCells(s.faceOffset, last, first);
+            }
+            else if (s.lowGhost >= 0 || s.highGhost >= 0)
+            {
+                double q[5];
+                if (s.lowGhost >= 0)
+                {
+                    coupleGhost(s.faceOffset, s.lowGhost, first, true);
+                }
+                else
+                {
+                    for (int c = 0; c < 5; ++c) q[c] = Ustar_.q[c][first];
+                    const double uLo = bcs[s.lowPatch].faceVelocity(q, d);
+                    uF_[d][s.faceOffset] = uLo;
+                    sys_.source[unknownOf_[first]] += A*uLo/dt;
+                }
+                if (s.highGhost >= 0)
+                {
+                    coupleGhost
+                    (
+                        s.faceOffset + s.length, s.highGhost, last, false
+                    );
+                }
+                else
+                {
+                    for (int c = 0; c < 5; ++c) q[c] = Ustar_.q[c][last];
+                    const double uHi = bcs[s.highPatch].faceVelocity(q, d);
+                    uF_[d][s.faceOffset + s.length] = uHi;
+                    sys_.source[unknownOf_[last]] -= A*uHi/dt;
+                }
             }
             else
             {
@@ -218,6 +310,18 @@ bool Foam::gasSteppers::semiImplicitStepper::advance
           + Foam::name(rep.cgResidual) + " after "
           + std::to_string(rep.cgIterations) + " CG iterations)";
         return explicitFallback(U, dt, out, rep);
+    }
+
+    // Parallel: the neighbour ranks' pressures at processor faces
+    std::vector<double> pG;
+    if (Pstream::parRun())
+    {
+        std::vector<double> mine(sys_.slotUnknown.size());
+        for (size_t j = 0; j < mine.size(); ++j)
+        {
+            mine[j] = p_[sys_.slotUnknown[j]];
+        }
+        mesh_.exchangeSlots(mine, pG);
     }
 
     // 4. (3.21) face velocities and pressures, then the flux-form updates
@@ -256,6 +360,23 @@ bool Foam::gasSteppers::semiImplicitStepper::advance
                 pF[s.faceOffset] = p_[unknownOf_[first]];
                 pF[s.faceOffset + s.length] = p_[unknownOf_[last]];
             }
+            auto ghostFace = [&](label f, double pl, double pr)
+            {
+                uF[f] = uStarF_[d][f] - dt*(pr - pl)/(dx*rhoF_[d][f]);
+                pF[f] = 0.5*(pl + pr);
+            };
+            if (s.lowGhost >= 0)
+            {
+                ghostFace(s.faceOffset, pG[s.lowGhost], p_[unknownOf_[first]]);
+            }
+            if (s.highGhost >= 0)
+            {
+                ghostFace
+                (
+                    s.faceOffset + s.length,
+                    p_[unknownOf_[last]], pG[s.highGhost]
+                );
+            }
         }
 
         const auto& lowFace = mesh_.lowFaceOf(d);
@@ -269,6 +390,27 @@ bool Foam::gasSteppers::semiImplicitStepper::advance
         }
     }
 
+    if (Pstream::parRun())
+    {
+        label badCell = -1;
+        for (const label i : cells_)
+        {
+            if (!out.admissible(i, gamma_))
+            {
+                badCell = i;
+                break;
+            }
+        }
+        // All ranks take the explicit fallback together
+        bool ok = badCell < 0;
+        reduce(ok, andOp<bool>());
+        if (!ok && badCell < 0)
+        {
+            ++rep.explicitFallbacks;
+            rep.fallbackReason = "an inadmissible state on another processor";
+            return explicitFallback(U, dt, out, rep);
+        }
+    }
     for (const label i : cells_)
     {
         if (!out.admissible(i, gamma_))
@@ -303,7 +445,8 @@ bool Foam::gasSteppers::semiImplicitStepper::explicitFallback
     while (true)
     {
         scalar speed = 0;
-        const scalar rate = acousticRate(Ustar_, speed);
+        scalar rate = acousticRate(Ustar_, speed);
+        if (Pstream::parRun()) reduce(rate, maxOp<scalar>());
         const scalar hMax = rate > 0 ? CFL_/rate : left;
         const scalar n = std::max(std::ceil(left/hMax - 1e-9), scalar(1));
         const scalar h = left/n;
