@@ -313,10 +313,9 @@ bool Foam::mpmSolver::energyBounded(const mpmParticles& P)
 }
 
 
-bool Foam::mpmSolver::step(mpmParticles& P, const scalar dt)
+bool Foam::mpmSolver::beginStep(mpmParticles& P)
 {
     const label nP = P.size();
-    const List<vector>& xv = mesh_.vertices();
     failure_.clear();
 
     // 1. Locate (walk from the previous cell)
@@ -336,8 +335,31 @@ bool Foam::mpmSolver::step(mpmParticles& P, const scalar dt)
     kernel_->compute(P.x, P.cell, kw_);
     grid_.activate(kw_);
 
-    // 2. P2G: mass and momentum
+    // 2. P2G: mass and momentum, then the velocity v* of each vertex; the
+    // grid update starts from v~ = v*
     transfer_->p2g(P, kw_, grid_);
+    const scalar tiny = VSMALL;
+    for (const label i : grid_.active)
+    {
+        const scalar m = grid_.mass[i];
+        if (mag(m) > tiny)
+        {
+            grid_.velocity[i] /= m;
+            grid_.newVelocity[i] = grid_.velocity[i];
+        }
+        else
+        {
+            grid_.velocity[i] = Zero;
+            grid_.newVelocity[i] = Zero;
+        }
+    }
+    return true;
+}
+
+
+void Foam::mpmSolver::gridUpdate(const mpmParticles& P, const scalar dt)
+{
+    const label nP = P.size();
 
     // 3.-5. Internal (2.8) and gravity (2.9) forces
     const bool gravity = magSqr(gravity_) > 0;
@@ -354,24 +376,41 @@ bool Foam::mpmSolver::step(mpmParticles& P, const scalar dt)
         }
     }
 
-    // 6. Grid update (2.11) and boundary conditions
+    // 6. Grid update (2.11) from v~ (v*, or v* with the coupling's change)
+    // and boundary conditions
     const scalar tiny = VSMALL;
     for (const label i : grid_.active)
     {
         const scalar m = grid_.mass[i];
         if (mag(m) > tiny)
         {
-            grid_.velocity[i] /= m;
             grid_.newVelocity[i] =
-                mesh_.inPlane(grid_.velocity[i] + (dt/m)*grid_.force[i]);
-        }
-        else
-        {
-            grid_.velocity[i] = Zero;
-            grid_.newVelocity[i] = Zero;
+                mesh_.inPlane(grid_.newVelocity[i] + (dt/m)*grid_.force[i]);
         }
     }
+    applyBoundary();
+}
+
+
+void Foam::mpmSolver::applyBoundary()
+{
     boundary_.apply(grid_.isActive, grid_.newVelocity);
+}
+
+
+bool Foam::mpmSolver::step(mpmParticles& P, const scalar dt)
+{
+    if (!beginStep(P)) return false;
+    gridUpdate(P, dt);
+    return endStep(P, dt);
+}
+
+
+bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
+{
+    const label nP = P.size();
+    const List<vector>& xv = mesh_.vertices();
+    const scalar tiny = VSMALL;
 
     for (const label i : grid_.active)
     {
