@@ -15,6 +15,13 @@ Description
     (dissertation ch. 3, 3.2.1-3.2.5 and 3.2.9).  With no particles in the
     case it is a pure gas solver.
 
+    With constant/mpmProperties and an MPM cloud (mpmSetParticles) the gas
+    is coupled two-way to MPM solids on its lattice (CSMPM, 3.2.2-3.2.8,
+    csmpmStepper in src/coupling): one pressure system for gas and solid,
+    the semiImplicit stepper required.  The cloud (with J^g), alphaSolid
+    and Rsolid are written at the write times.  Without
+    constant/mpmProperties nothing of the coupling is built or run.
+
     Reads system/shockMpmDict, constant/thermophysicalProperties and the
     initial fields p, U and rho (or T), e.g. from setFields.  Writes rho, U,
     p, T, Mach and schlieren; restarts from any written time.
@@ -34,6 +41,7 @@ Usage
 
 #include "fvCFD.H"
 #include "gasDynamics.H"
+#include "csmpmStepper.H"
 #include "IFstream.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -80,6 +88,22 @@ int main(int argc, char *argv[])
 
     gasDynamics gas(mesh);
 
+    // Solids: the coupled stepper replaces the gas's (which it keeps for
+    // the gas's time step); nothing of it exists in a gas-only case
+    csmpmStepper* coupled = nullptr;
+    if (csmpmStepper::caseHasSolid(mesh))
+    {
+        autoPtr<gasStepper> gasOnly
+        (
+            gasStepper::New(gas.dict().subDict("gas"), gas.op())
+        );
+        coupled = new csmpmStepper
+        (
+            mesh, gas.dict(), gas.op(), std::move(gasOnly), gas.state()
+        );
+        gas.setStepper(autoPtr<gasStepper>(coupled));
+    }
+
     // The controlDict's deltaT only matters to Time::run(), which would stop
     // before the first step if it exceeded the end time: use the stable one
     runTime.setDeltaT
@@ -93,10 +117,26 @@ int main(int argc, char *argv[])
     while (runTime.run())
     {
         gas.step(runTime);
+        if (coupled && runTime.writeTime())
+        {
+            coupled->write();
+            scalar m, ke;
+            vector mom;
+            coupled->solidTotals(m, mom, ke);
+            scalar gm, ge;
+            vector gmom;
+            gas.totals(gm, gmom, ge);
+            const scalar sc = coupled->lattice().scale();
+            Info<< "    solid totals: mass " << sc*m << ", momentum "
+                << sc*mom << ", kinetic energy " << sc*ke << nl
+                << "    gas + solid: mass " << gm + sc*m << ", momentum "
+                << gmom + sc*mom << nl;
+        }
         runTime.write();
     }
 
     gas.summary();
+    if (coupled) coupled->summary();
     Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
         << "  ClockTime = " << runTime.elapsedClockTime() << " s"
         << nl << nl << "End" << nl << endl;

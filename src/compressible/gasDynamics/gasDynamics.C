@@ -456,6 +456,10 @@ void Foam::gasDynamics::step(Time& runTime)
         Info<< "  explicitFallback = " << rep.explicitSubsteps
             << " substeps (" << rep.fallbackReason.c_str() << ")";
     }
+    if (!rep.info.empty())
+    {
+        Info<< "  " << rep.info.c_str();
+    }
     Info<< nl;
 
     if (runTime.writeTime())

@@ -196,6 +196,11 @@ void Foam::eulerOperator::computeFluxes(const gasState& U, bool advective)
                 wallFace(d, s.faceOffset + s.length);
             }
         }
+        if (open_[d])
+        {
+            const label nf = mesh_.nFaces(d);
+            for (label f = 0; f < nf; ++f) blendFace(d, f);
+        }
     }
 }
 
@@ -216,6 +221,11 @@ void Foam::eulerOperator::firstOrderFaces
         const gasLine line = gather(U, d, s, 1, advective);
         firstOrderFace(line, s, m);
         firstOrderFace(line, s, m + 1);
+        if (open_[d])
+        {
+            blendFace(d, f0);
+            blendFace(d, f0 + 1);
+        }
         if (m == 0 && bcs_[s.lowPatch].kindOf() == gasBoundary::kind::wall)
         {
             wallFace(d, s.faceOffset);

@@ -1,0 +1,434 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "csmpmStepper.H"
+#include "mpmCloudIO.H"
+#include "dictionaryChecks.H"
+#include "fvMesh.H"
+#include "volFields.H"
+#include "IOField.H"
+#include "cloud.H"
+#include "OSspecific.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(csmpmStepper, 0);
+}
+
+const Foam::Enum<Foam::csmpmStepper::stepOrder>
+Foam::csmpmStepper::stepOrderNames
+({
+    { stepOrder::couplingFirst, "couplingFirst" },
+    { stepOrder::mpmFirst, "mpmFirst" },
+});
+
+
+namespace
+{
+    const Foam::dictionary& gasDictOf(const Foam::dictionary& d)
+    {
+        return d.subDict("gas");
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::csmpmStepper::csmpmStepper
+(
+    const fvMesh& mesh,
+    const dictionary& shockMpmDict,
+    eulerOperator& op,
+    autoPtr<gasStepper>&& gasOnly,
+    const gasState& U
+)
+:
+    gasStepper(gasDictOf(shockMpmDict), op),
+    fvMesh_(mesh),
+    mpmDict_
+    (
+        IOobject
+        (
+            "mpmProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    cloudName_(mpmDict_.getOrDefault<word>("cloudName", "mpmCloud")),
+    view_(mesh),
+    boundary_(mesh, view_, mpmDict_.subOrEmptyDict("boundary")),
+    solver_(view_, mpmDict_, boundary_),
+    gasOnly_(std::move(gasOnly)),
+    order_(stepOrder::couplingFirst),
+    tol_(1e-10),
+    maxIter_(1000),
+    lattice_(op.mesh(), view_)
+{
+    const dictionary& gasDict = gasDictOf(shockMpmDict);
+    const word stepper(gasDict.getOrDefault<word>("stepper", "explicit"));
+    if (stepper != "semiImplicit")
+    {
+        FatalIOErrorInFunction(gasDict)
+            << gasDict.name() << ": entry 'stepper' is " << stepper
+            << ", but a case with solids (constant/mpmProperties) needs the"
+            << " pressure system of the coupling." << nl
+            << "    allowed: semiImplicit" << exit(FatalIOError);
+    }
+    if (Pstream::parRun())
+    {
+        FatalErrorInFunction
+            << "shockMpmFoam with solids (constant/mpmProperties) runs"
+            << " serially so far: the coupled pressure system is not"
+            << " distributed. Run without -parallel, or remove the solid"
+            << exit(FatalError);
+    }
+    tol_ = dictionaryChecks::getPositive(gasDict, "CGtolerance", 1e-10);
+    maxIter_ =
+        dictionaryChecks::getLabelAtLeast(gasDict, "CGmaxIter", 1000, 1);
+
+    const dictionary& cDict = shockMpmDict.subOrEmptyDict("coupling");
+    order_ = dictionaryChecks::getEnum
+    (
+        cDict, "order", stepOrderNames, stepOrder::couplingFirst
+    );
+
+    if (!mpmCloudIO::read(mesh, cloudName_, P_) || P_.size() == 0)
+    {
+        FatalErrorInFunction
+            << "No particles: " << mesh.time().timePath()/cloud::prefix
+            /cloudName_ << " holds no MPM cloud, but constant/mpmProperties"
+            << " exists. Seed one with mpmSetParticles, or remove"
+            << " constant/mpmProperties for a gas-only run"
+            << exit(FatalError);
+    }
+    solver_.initialise(P_);
+    readGhost(cDict, gasDict);
+    (void)U;
+
+    const label nLat = mesh_.nLattice();
+    Ustar_.resize(nLat);
+    unknownOf_.assign(nLat, -1);
+    for (size_t k = 0; k < cells_.size(); ++k) unknownOf_[cells_[k]] = label(k);
+    p_.assign(cells_.size(), 0.0);
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!mesh_.active(d)) continue;
+        const label nf = mesh_.nFaces(d);
+        uStarF_[d].assign(nf, 0.0);
+        rhoF_[d].assign(nf, 0.0);
+        uF_[d].assign(nf, 0.0);
+        pF_[d].assign(nf, 0.0);
+        usF_[d].assign(nf, 0.0);
+    }
+
+    // Ambient ghost pressure needs the gas state at the particles
+    const word init
+    (
+        dictionaryChecks::getAsOrDefault<word>
+        (
+            cDict, "ghostInit", "ambient", "ambient or unstressed"
+        )
+    );
+    if (init != "ambient" && init != "unstressed")
+    {
+        dictionaryChecks::badEntry
+        (
+            cDict, "ghostInit", init, "ambient or unstressed"
+        );
+    }
+    if (init == "ambient" && !Jg_.size())
+    {
+        // J^g from p^g = p_gas: J^g = 1 - p/lambda^g (3.17)
+        Jg_.setSize(P_.size());
+        forAll(P_.x, p)
+        {
+            label ijk[3] = {0, 0, 0};
+            for (label d = 0; d < 3; ++d)
+            {
+                if (!mesh_.active(d)) continue;
+                const scalar s =
+                    (P_.x[p][d] - mesh_.origin()[d])/mesh_.dx(d);
+                ijk[d] = min(max(label(std::floor(s)), 0), mesh_.n(d) - 1);
+            }
+            const label i =
+                ijk[0] + mesh_.n(0)*(ijk[1] + mesh_.n(1)*ijk[2]);
+            const double rho = U.q[0][i];
+            const double pa = (gamma_ - 1)*(U.q[4][i] - 0.5*(U.q[1][i]
+                *U.q[1][i] + U.q[2][i]*U.q[2][i] + U.q[3][i]*U.q[3][i])/rho);
+            Jg_[p] = 1 - pa/lambdaG_[p];
+            if (!(Jg_[p] > 0))
+            {
+                FatalIOErrorInFunction(cDict)
+                    << "The ambient pressure " << pa << " Pa at particle "
+                    << p << " is above the ghost matrix's lambda^g "
+                    << lambdaG_[p] << " Pa: J^g = 1 - p/lambda^g would be "
+                    << Jg_[p] << ". Raise ghostLambda (in " << cDict.name()
+                    << ") or use ghostInit unstressed" << exit(FatalIOError);
+            }
+        }
+    }
+    else if (!Jg_.size())
+    {
+        Jg_.setSize(P_.size());
+        Jg_ = 1;
+    }
+    pg_.setSize(P_.size());
+    Kg_.setSize(P_.size());
+    Vold_.setSize(P_.size());
+
+    Info<< "CSMPM coupling: " << P_.size() << " particles, "
+        << view_.nVertices() << " MPM nodes on the gas lattice, order "
+        << stepOrderNames[order_] << ", kernel " << solver_.kernel().type()
+        << nl;
+}
+
+
+void Foam::csmpmStepper::readGhost
+(
+    const dictionary& cDict,
+    const dictionary& gasDict
+)
+{
+    lambdaG_.setSize(P_.size());
+    const bool given = cDict.found("ghostLambda");
+    const scalar lg =
+        given ? dictionaryChecks::getPositive(cDict, "ghostLambda") : 0;
+    forAll(P_.x, p)
+    {
+        lambdaG_[p] =
+            given ? lg : solver_.materials()[P_.material[p]].lambda();
+        if (!(lambdaG_[p] > 0))
+        {
+            FatalIOErrorInFunction(cDict)
+                << "The material " << solver_.materials()[P_.material[p]]
+                   .name() << " has lambda " << lambdaG_[p] << " <= 0 (nu "
+                << solver_.materials()[P_.material[p]].nu() << "), so the"
+                << " ghost matrix (3.17) would not resist compression: set"
+                << " ghostLambda > 0 in " << cDict.name()
+                << exit(FatalIOError);
+        }
+    }
+
+    // J^g from the cloud on a restart
+    IOobject io
+    (
+        "Jg",
+        fvMesh_.time().timeName(),
+        cloud::prefix/cloudName_,
+        fvMesh_,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    if (io.typeHeaderOk<IOField<scalar>>(false))
+    {
+        IOField<scalar> f(io);
+        if (f.size() != P_.size())
+        {
+            FatalErrorInFunction
+                << f.objectPath() << " holds " << f.size() << " values for "
+                << P_.size() << " particles" << exit(FatalError);
+        }
+        Jg_.setSize(f.size());
+        forAll(f, p) Jg_[p] = f[p];
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::csmpmStepper::caseHasSolid(const fvMesh& mesh)
+{
+    return isFile(mesh.time().constantPath()/"mpmProperties");
+}
+
+
+Foam::scalar Foam::csmpmStepper::stableDeltaT
+(
+    const gasState& U,
+    scalar CFL,
+    scalar& speed,
+    word& limiter
+) const
+{
+    const scalar dtGas = gasOnly_->stableDeltaT(U, CFL, speed, limiter);
+    const scalar dtSolid = solver_.deltaT(P_);
+    if (dtSolid < dtGas)
+    {
+        limiter = "solid elastic waves";
+        return dtSolid;
+    }
+    return dtGas;
+}
+
+
+bool Foam::csmpmStepper::advance
+(
+    const gasState& U,
+    scalar dt,
+    gasState& out,
+    report& rep
+)
+{
+    // 1. P2G: nodal masses and v*
+    if (!solver_.beginStep(P_))
+    {
+        rep.failure = solver_.failure();
+        return false;
+    }
+    forAll(P_.x, p)
+    {
+        pg_[p] = -lambdaG_[p]*(Jg_[p] - 1);     // (3.17)
+        Kg_[p] = lambdaG_[p]*Jg_[p];            // (3.24)
+    }
+
+    // 2. Interfaces: reflective share of each face (3.2.3)
+    lattice_.deposit(P_, pg_, Kg_);
+
+    // 3. Advection with blended fluxes (3.10-3.12)
+    for (label d = 0; d < 3; ++d)
+    {
+        if (mesh_.active(d)) op_.setPassable(d, &lattice_.open(d));
+    }
+    const bool advected = rungeKutta(U, dt, true, Ustar_, rep);
+    for (label d = 0; d < 3; ++d) op_.setPassable(d, nullptr);
+    if (!advected) return false;
+
+    // 6'. Ablation order: the MPM grid update before the coupled solve
+    if (order_ == stepOrder::mpmFirst)
+    {
+        solver_.gridUpdate(P_, dt);
+    }
+
+    // 4.-5. The coupled solve
+    if (!pressureStep(U, dt, out, rep)) return false;
+
+    // 6. The MPM grid update after it (3.2.8)
+    if (order_ == stepOrder::couplingFirst)
+    {
+        solver_.gridUpdate(P_, dt);
+    }
+    else
+    {
+        solver_.applyBoundary();
+    }
+
+    // 7. G2P; J^g by (3.20) with the velocity gradient that updates F
+    forAll(P_.x, p) Vold_[p] = P_.V[p];
+    if (!solver_.endStep(P_, dt))
+    {
+        rep.failure = solver_.failure();
+        return false;
+    }
+    forAll(P_.x, p) Jg_[p] *= P_.V[p]/Vold_[p];
+
+    ++nSteps_;
+    cgTotal_ += rep.cgIterations;
+    cgMax_ = max(cgMax_, rep.cgIterations);
+    rep.info = "CG residual " + std::to_string(rep.cgResidual)
+      + "  solidCells " + std::to_string(lattice_.nSolidCells())
+      + "  interfaceFaces " + std::to_string(lattice_.nInterfaceFaces());
+    return true;
+}
+
+
+void Foam::csmpmStepper::solidTotals
+(
+    scalar& m,
+    vector& mom,
+    scalar& kinetic
+) const
+{
+    m = 0;
+    mom = Zero;
+    kinetic = 0;
+    forAll(P_.x, p)
+    {
+        m += P_.m[p];
+        mom += P_.m[p]*P_.v[p];
+        kinetic += 0.5*P_.m[p]*magSqr(P_.v[p]);
+    }
+}
+
+
+void Foam::csmpmStepper::write() const
+{
+    mpmCloudIO::write(fvMesh_, cloudName_, P_);
+    IOField<scalar> Jg
+    (
+        IOobject
+        (
+            "Jg",
+            fvMesh_.time().timeName(),
+            cloud::prefix/cloudName_,
+            fvMesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        Jg_.size()
+    );
+    forAll(Jg_, p) Jg[p] = Jg_[p];
+    Jg.write();
+
+    volScalarField alpha
+    (
+        IOobject
+        (
+            "alphaSolid",
+            fvMesh_.time().timeName(),
+            fvMesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        fvMesh_,
+        dimensionedScalar(dimless, Zero)
+    );
+    volScalarField R
+    (
+        IOobject
+        (
+            "Rsolid",
+            fvMesh_.time().timeName(),
+            fvMesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        fvMesh_,
+        dimensionedScalar(dimless, Zero)
+    );
+    const auto& latticeOf = mesh_.latticeOf();
+    forAll(alpha, c)
+    {
+        const label i = latticeOf[c];
+        alpha[c] = lattice_.phi(i);
+        scalar r = 0;
+        for (label d = 0; d < 3; ++d)
+        {
+            if (!mesh_.active(d)) continue;
+            const label f = mesh_.lowFaceOf(d)[i];
+            r = max(r, max(lattice_.R(d)[f], lattice_.R(d)[f + 1]));
+        }
+        R[c] = r;
+    }
+    alpha.write();
+    R.write();
+}
+
+
+void Foam::csmpmStepper::summary() const
+{
+    Info<< "CSMPM coupling summary: " << nSteps_ << " coupled steps, "
+        << P_.size() << " particles, CG iterations mean "
+        << scalar(cgTotal_)/max(nSteps_, label(1)) << ", max " << cgMax_
+        << nl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,277 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "solidLattice.H"
+#include "bspline2Basis.H"
+#include "mathematicalConstants.H"
+#include "error.H"
+
+// * * * * * * * * * * * * * * Private Functions * * * * * * * * * * * * * * //
+
+void Foam::solidLattice::build()
+{
+    scale_ = 1;
+    for (label d = 0; d < 3; ++d)
+    {
+        nv_[d] = lat_.active(d) ? lat_.n(d) + 1 : 1;
+        if (!lat_.active(d)) scale_ *= lat_.dx(d);
+    }
+    vertexAt_.assign(nv_[0]*nv_[1]*nv_[2], -1);
+    const List<vector>& xv = view_.vertices();
+    forAll(xv, v)
+    {
+        label ijk[3] = {0, 0, 0};
+        for (label d = 0; d < 3; ++d)
+        {
+            if (!lat_.active(d) || d >= view_.dim()) continue;
+            const scalar s = (xv[v][d] - lat_.origin()[d])/lat_.dx(d);
+            ijk[d] = label(std::lround(s));
+            if (mag(s - ijk[d]) > 1e-6 || ijk[d] < 0 || ijk[d] >= nv_[d])
+            {
+                FatalErrorInFunction
+                    << "MPM vertex " << v << " at " << xv[v]
+                    << " is not a vertex of the gas lattice (origin "
+                    << lat_.origin() << ", spacing " << lat_.dx(d)
+                    << " along direction " << d << ")" << exit(FatalError);
+            }
+        }
+        vertexAt_[ijk[0] + nv_[0]*(ijk[1] + nv_[1]*ijk[2])] = v;
+    }
+
+    for (label d = 0; d < 3; ++d)
+    {
+        faces_[d].clear();
+        nodes_[d].clear();
+        weights_[d].clear();
+        if (!lat_.active(d)) continue;
+        const label st = lat_.stride(d);
+        for (const auto& s : lat_.segments(d))
+        {
+            for (label m = 1; m < s.length; ++m)
+            {
+                face fc;
+                fc.f = s.faceOffset + m;
+                fc.l = s.start + (m - 1)*st;
+                fc.r = s.start + m*st;
+                fc.node0 = label(nodes_[d].size());
+
+                // (3.32) B-spline weights at the face centre: integer
+                // coordinate a along d, half-integers across
+                label c[3];
+                lat_.ijk(fc.r, c[0], c[1], c[2]);
+                label lo[3], cnt[3];
+                double w[3][3];
+                for (label e = 0; e < 3; ++e)
+                {
+                    if (!lat_.active(e))
+                    {
+                        lo[e] = 0; cnt[e] = 1; w[e][0] = 1;
+                    }
+                    else if (e == d)
+                    {
+                        lo[e] = c[e] - 1; cnt[e] = 3;
+                        w[e][0] = bspline2::N(1);
+                        w[e][1] = bspline2::N(0);
+                        w[e][2] = bspline2::N(-1);
+                    }
+                    else
+                    {
+                        lo[e] = c[e]; cnt[e] = 2;
+                        w[e][0] = bspline2::N(0.5);
+                        w[e][1] = bspline2::N(-0.5);
+                    }
+                }
+                for (label a = 0; a < cnt[0]; ++a)
+                for (label b = 0; b < cnt[1]; ++b)
+                for (label k = 0; k < cnt[2]; ++k)
+                {
+                    const label i = lo[0] + a, j = lo[1] + b, kk = lo[2] + k;
+                    if
+                    (
+                        i < 0 || j < 0 || kk < 0
+                     || i >= nv_[0] || j >= nv_[1] || kk >= nv_[2]
+                    )
+                    {
+                        continue;
+                    }
+                    const label v = vertexAt_[i + nv_[0]*(j + nv_[1]*kk)];
+                    if (v < 0) continue;
+                    nodes_[d].push_back(v);
+                    weights_[d].push_back(w[0][a]*w[1][b]*w[2][k]);
+                }
+                fc.nNodes = label(nodes_[d].size()) - fc.node0;
+                faces_[d].push_back(fc);
+            }
+        }
+        const label nf = lat_.nFaces(d);
+        Vface_[d].assign(nf, 0.0);
+        R_[d].assign(nf, 0.0);
+        open_[d].assign(nf, 1.0);
+    }
+    const label nLat = lat_.nLattice();
+    Vcell_.assign(nLat, 0.0);
+    pg_.assign(nLat, 0.0);
+    Kg_.assign(nLat, 0.0);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::solidLattice::solidLattice
+(
+    const cartesianMesh& lattice,
+    const mpmMeshView& view
+)
+:
+    lat_(lattice),
+    view_(view)
+{
+    build();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::solidLattice::deposit
+(
+    const mpmParticles& P,
+    const UList<scalar>& pgp,
+    const UList<scalar>& Kgp
+)
+{
+    const label nLat = lat_.nLattice();
+    std::fill(Vcell_.begin(), Vcell_.end(), 0.0);
+    std::fill(pg_.begin(), pg_.end(), 0.0);
+    std::fill(Kg_.begin(), Kg_.end(), 0.0);
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!lat_.active(d)) continue;
+        std::fill(Vface_[d].begin(), Vface_[d].end(), 0.0);
+    }
+    const auto& cellAt = lat_.cellAt();
+    const label n[3] = {lat_.n(0), lat_.n(1), lat_.n(2)};
+
+    // Linear hats: cells centred at half-integers, clamped at the ends so
+    // that no volume is lost
+    auto hat = [](double s, label nCells, label& i0, double& t)
+    {
+        i0 = label(std::floor(s));
+        t = s - i0;
+        if (i0 < 0) { i0 = 0; t = 0; }
+        if (i0 >= nCells - 1) { i0 = nCells - 1; t = 0; }
+    };
+
+    forAll(P.x, p)
+    {
+        const scalar Vp = scale_*P.V[p];
+        double s[3];
+        label c0[3];
+        double tc[3];
+        for (label e = 0; e < 3; ++e)
+        {
+            if (!lat_.active(e)) { c0[e] = 0; tc[e] = 0; s[e] = 0; continue; }
+            s[e] = (P.x[p][e] - lat_.origin()[e])/lat_.dx(e);
+            hat(s[e] - 0.5, n[e], c0[e], tc[e]);
+        }
+
+        // Cells
+        for (label a = 0; a < 2; ++a)
+        for (label b = 0; b < 2; ++b)
+        for (label k = 0; k < 2; ++k)
+        {
+            const double w =
+                (a ? tc[0] : 1 - tc[0])*(b ? tc[1] : 1 - tc[1])
+               *(k ? tc[2] : 1 - tc[2]);
+            if (w <= 0) continue;
+            const label idx =
+                (c0[0] + a) + n[0]*((c0[1] + b) + n[1]*(c0[2] + k));
+            if (idx >= nLat || cellAt[idx] < 0) continue;
+            Vcell_[idx] += w*Vp;
+            pg_[idx] += w*Vp*pgp[p];
+            Kg_[idx] += w*Vp*Kgp[p];
+        }
+
+        // Faces of each direction: hat at integers along d
+        for (label d = 0; d < 3; ++d)
+        {
+            if (!lat_.active(d)) continue;
+            label f0[3];
+            double tf[3];
+            for (label e = 0; e < 3; ++e) { f0[e] = c0[e]; tf[e] = tc[e]; }
+            hat(s[d], n[d] + 1, f0[d], tf[d]);
+            for (label a = 0; a < 2; ++a)
+            for (label b = 0; b < 2; ++b)
+            for (label k = 0; k < 2; ++k)
+            {
+                const double w =
+                    (a ? tf[0] : 1 - tf[0])*(b ? tf[1] : 1 - tf[1])
+                   *(k ? tf[2] : 1 - tf[2]);
+                if (w <= 0) continue;
+                label ijk[3] = {f0[0] + a, f0[1] + b, f0[2] + k};
+                // The face at integer a along d is the low face of cell a,
+                // or the high face of cell a - 1 at the far end
+                bool high = false;
+                if (ijk[d] >= n[d]) { ijk[d] = n[d] - 1; high = true; }
+                const label idx = ijk[0] + n[0]*(ijk[1] + n[1]*ijk[2]);
+                if (idx >= nLat || cellAt[idx] < 0) continue;
+                const label f = lat_.lowFaceOf(d)[idx] + (high ? 1 : 0);
+                Vface_[d][f] += w*Vp;
+            }
+        }
+    }
+
+    // (3.2.3) reflective share of each face
+    const scalar Vc = lat_.cellVolume();
+    const label D = lat_.nDims();
+    nInterfaceFaces_ = 0;
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!lat_.active(d)) continue;
+        scalar dxt = 1;     // 2D: the face's width
+        for (label e = 0; e < 3; ++e)
+        {
+            if (e != d && lat_.active(e)) dxt = lat_.dx(e);
+        }
+        const scalar Af = Vc/lat_.dx(d);
+        const label nf = lat_.nFaces(d);
+        for (label f = 0; f < nf; ++f)
+        {
+            const double frac = Vface_[d][f]/Vc;
+            double R = 0;
+            if (frac > 0)
+            {
+                if (D == 1)
+                {
+                    R = frac;
+                }
+                else if (D == 2)
+                {
+                    const double A2 = frac*lat_.dx(d)*dxt;
+                    R = 2*std::sqrt(A2/constant::mathematical::pi)/dxt;
+                }
+                else
+                {
+                    const double r = std::cbrt
+                    (
+                        3*frac*Vc/(4*constant::mathematical::pi)
+                    );
+                    R = constant::mathematical::pi*r*r/Af;
+                }
+                if (R > 1) R = 1;
+                if (R < 1) ++nInterfaceFaces_;
+            }
+            R_[d][f] = R;
+            open_[d][f] = 1 - R;
+        }
+    }
+    nSolidCells_ = 0;
+    for (label i = 0; i < nLat; ++i)
+    {
+        if (Vcell_[i] > 0.5*Vc) ++nSolidCells_;
+    }
+}
+
+
+// ************************************************************************* //
