@@ -30,6 +30,47 @@ bool Foam::csmpmStepper::pressureStep
           + S.q[2][i]*S.q[2][i] + S.q[3][i]*S.q[3][i])/rho);
     };
 
+    // The faces the solid couples to: R > 0 and some node of the face with
+    // solid mass; the face's B-spline weights renormalised over those
+    // nodes, so that the solid's force and the gas's add up to the face's
+    // pressure jump exactly (momentum conserved to round-off)
+    const scalar tiny = VSMALL;
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!mesh_.active(d)) continue;
+        const std::vector<double>& R = lattice_.R(d);
+        Reff_[d] = R;
+        const std::vector<label>& nodes = lattice_.nodes(d);
+        const std::vector<double>& w = lattice_.weights(d);
+        wNorm_[d].resize(w.size());
+        for (const auto& fc : lattice_.faces(d))
+        {
+            if (R[fc.f] <= 0) continue;
+            double ws = 0;
+            for (label e = fc.node0; e < fc.node0 + fc.nNodes; ++e)
+            {
+                if (grid.mass[nodes[e]] > tiny) ws += w[e];
+            }
+            if (ws <= 0)
+            {
+                Reff_[d][fc.f] = 0;
+                continue;
+            }
+            for (label e = fc.node0; e < fc.node0 + fc.nNodes; ++e)
+            {
+                wNorm_[d][e] = grid.mass[nodes[e]] > tiny ? w[e]/ws : 0;
+            }
+        }
+        // Boundary and periodic faces: both phases take the condition
+        for (const auto& s : mesh_.segments(d))
+        {
+            Reff_[d][s.faceOffset] = 0;
+            Reff_[d][s.faceOffset + s.length] = 0;
+        }
+        openEff_[d].resize(R.size());
+        for (size_t f = 0; f < R.size(); ++f) openEff_[d][f] = 1 - Reff_[d][f];
+    }
+
     // (3.22), (3.24): compressibilities mixed by the solid fraction, and
     // the intermediate pressure that goes with them
     pressureSystem& gsys = sys_.gas;
@@ -61,7 +102,7 @@ bool Foam::csmpmStepper::pressureStep
         const scalar A = V/mesh_.dx(d);
         const scalar dx = mesh_.dx(d);
         const label st = mesh_.stride(d);
-        const std::vector<double>& open = lattice_.open(d);
+        const std::vector<double>& open = openEff_[d];
         for (const auto& s : mesh_.segments(d))
         {
             const bool periodic =
@@ -114,15 +155,14 @@ bool Foam::csmpmStepper::pressureStep
     }
 
     // The solid's part: T = W^T G over the faces the solid blocks
-    const scalar tiny = VSMALL;
     sys_.beginSolid(grid.mass.size());
     for (label d = 0; d < 3; ++d)
     {
         if (!mesh_.active(d)) continue;
         const scalar A = V/mesh_.dx(d);
-        const std::vector<double>& R = lattice_.R(d);
+        const std::vector<double>& R = Reff_[d];
         const std::vector<label>& nodes = lattice_.nodes(d);
-        const std::vector<double>& w = lattice_.weights(d);
+        const std::vector<double>& w = wNorm_[d];
         for (const auto& fc : lattice_.faces(d))
         {
             const double Rf = R[fc.f];
@@ -173,7 +213,7 @@ bool Foam::csmpmStepper::pressureStep
         if (!mesh_.active(d)) continue;
         const scalar dx = mesh_.dx(d);
         const label st = mesh_.stride(d);
-        const std::vector<double>& open = lattice_.open(d);
+        const std::vector<double>& open = openEff_[d];
         std::vector<double>& uF = uF_[d];
         std::vector<double>& pF = pF_[d];
         std::vector<double>& usF = usF_[d];
@@ -215,8 +255,8 @@ bool Foam::csmpmStepper::pressureStep
             }
         }
         const std::vector<label>& nodes = lattice_.nodes(d);
-        const std::vector<double>& w = lattice_.weights(d);
-        const std::vector<double>& R = lattice_.R(d);
+        const std::vector<double>& w = wNorm_[d];
+        const std::vector<double>& R = Reff_[d];
         for (const auto& fc : lattice_.faces(d))
         {
             if (R[fc.f] <= 0) continue;
