@@ -7,29 +7,11 @@
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-// (3.21)-(3.24) discretised, reduced to (3.37), solved; (3.36) for the
-// solid's nodes, local gradients (3.21) for the gas
-bool Foam::csmpmStepper::pressureStep
-(
-    const gasState& U,
-    scalar dt,
-    gasState& out,
-    report& rep
-)
+// The faces the solid couples to, before the advection
+void Foam::csmpmStepper::couplingFaces()
 {
-    const scalar V = mesh_.cellVolume();
-    const label n = label(cells_.size());
-    const PtrList<gasBoundary>& bcs = op_.boundaries();
-    mpmGrid& grid = solver_.grid();
-    List<vector>& vs = grid.newVelocity;
-
-    auto pressure = [&](const gasState& S, label i)
-    {
-        const double rho = S.q[0][i];
-        return (gamma_ - 1)*(S.q[4][i] - 0.5*(S.q[1][i]*S.q[1][i]
-          + S.q[2][i]*S.q[2][i] + S.q[3][i]*S.q[3][i])/rho);
-    };
-
+    const mpmGrid& grid = solver_.grid();
+    const List<vector>& vs = grid.newVelocity;
     // The faces the solid couples to: R > 0 and some node of the face with
     // solid mass; the face's B-spline weights renormalised over those
     // nodes, so that the solid's force and the gas's add up to the face's
@@ -69,7 +51,48 @@ bool Foam::csmpmStepper::pressureStep
         }
         openEff_[d].resize(R.size());
         for (size_t f = 0; f < R.size(); ++f) openEff_[d][f] = 1 - Reff_[d][f];
+
+        // The solid's normal velocity at each coupled face (v*)
+        wallU_[d].assign(R.size(), 0.0);
+        for (const auto& fc : lattice_.faces(d))
+        {
+            if (Reff_[d][fc.f] <= 0) continue;
+            double u = 0;
+            for (label e = fc.node0; e < fc.node0 + fc.nNodes; ++e)
+            {
+                u += wNorm_[d][e]*vs[nodes[e]][d];
+            }
+            wallU_[d][fc.f] = u;
+        }
     }
+    phiCell_.resize(mesh_.nLattice());
+    for (label i = 0; i < mesh_.nLattice(); ++i) phiCell_[i] = lattice_.phi(i);
+
+}
+
+
+// (3.21)-(3.24) discretised, reduced to (3.37), solved; (3.36) for the
+// solid's nodes, local gradients (3.21) for the gas
+bool Foam::csmpmStepper::pressureStep
+(
+    const gasState& U,
+    scalar dt,
+    gasState& out,
+    report& rep
+)
+{
+    const scalar V = mesh_.cellVolume();
+    const label n = label(cells_.size());
+    const PtrList<gasBoundary>& bcs = op_.boundaries();
+    mpmGrid& grid = solver_.grid();
+    List<vector>& vs = grid.newVelocity;
+
+    auto pressure = [&](const gasState& S, label i)
+    {
+        const double rho = S.q[0][i];
+        return (gamma_ - 1)*(S.q[4][i] - 0.5*(S.q[1][i]*S.q[1][i]
+          + S.q[2][i]*S.q[2][i] + S.q[3][i]*S.q[3][i])/rho);
+    };
 
     // (3.22), (3.24): compressibilities mixed by the solid fraction, and
     // the intermediate pressure that goes with them
@@ -78,9 +101,12 @@ bool Foam::csmpmStepper::pressureStep
     for (label k = 0; k < n; ++k)
     {
         const label i = cells_[k];
-        const double pGas = pressure(Ustar_, i);
-        const double kGas = 1.0/(gamma_*pressure(U, i));
+        // The gas of a cell the solid partly covers fills the open
+        // volume (1 - phi) V: its pressure is the EOS of that volume
         const double phi = lattice_.phi(i);
+        const double open = max(1 - phi, gasVolumeMin_);
+        const double pGas = pressure(Ustar_, i)/open;
+        const double kGas = open/(gamma_*pressure(U, i));
         double kappa = kGas, ps = pGas;
         if (phi > 0)
         {
@@ -109,7 +135,12 @@ bool Foam::csmpmStepper::pressureStep
                 bcs[s.lowPatch].kindOf() == gasBoundary::kind::periodic;
             auto coupleCells = [&](label f, label l, label r)
             {
-                const double rhoF = 0.5*(Ustar_.q[0][l] + Ustar_.q[0][r]);
+                // The gas's own density: its content over the open volume
+                const double rhoF = 0.5
+                   *(
+                        Ustar_.q[0][l]/max(1 - phiCell_[l], gasVolumeMin_)
+                      + Ustar_.q[0][r]/max(1 - phiCell_[r], gasVolumeMin_)
+                    );
                 const double uS = 0.5
                    *(
                         Ustar_.q[1 + d][l]/Ustar_.q[0][l]
@@ -155,6 +186,7 @@ bool Foam::csmpmStepper::pressureStep
     }
 
     // The solid's part: T = W^T G over the faces the solid blocks
+    const scalar tiny = VSMALL;
     sys_.beginSolid(grid.mass.size());
     for (label d = 0; d < 3; ++d)
     {
@@ -220,6 +252,7 @@ bool Foam::csmpmStepper::pressureStep
 
         // Momentum impulse of the passable share of each face
         std::vector<double>& J = uStarF_[d];    // reused after uF is set
+        shareL_.resize(J.size());
         for (const auto& s : mesh_.segments(d))
         {
             const bool periodic =
@@ -231,6 +264,11 @@ bool Foam::csmpmStepper::pressureStep
                 pF[f] = 0.5*(pl + pr);
                 usF[f] = 0;
                 J[f] = open[f]*(pl - pr);
+                // Shared by the two cells as their gas contents are (a
+                // cell the solid covers holds little gas and gets little)
+                const double ol = max(1 - phiCell_[l], gasVolumeMin_);
+                const double orr = max(1 - phiCell_[r], gasVolumeMin_);
+                shareL_[f] = ol/(ol + orr);
             };
             for (label m = 1; m < s.length; ++m)
             {
@@ -245,6 +283,7 @@ bool Foam::csmpmStepper::pressureStep
                 pF[s.faceOffset + s.length] = pF[s.faceOffset];
                 usF[s.faceOffset + s.length] = 0;
                 J[s.faceOffset + s.length] = J[s.faceOffset];
+                shareL_[s.faceOffset + s.length] = shareL_[s.faceOffset];
             }
             else
             {
@@ -265,7 +304,9 @@ bool Foam::csmpmStepper::pressureStep
             {
                 u += w[e]*vs[nodes[e]][d];
             }
-            usF[fc.f] = u;
+            // The solid's work reaches the gas on the face's gas side
+            // only: none between two cells the solid covers
+            usF[fc.f] = u*(1 - min(phiCell_[fc.l], phiCell_[fc.r]));
         }
 
         const auto& lowFace = mesh_.lowFaceOf(d);
@@ -276,13 +317,15 @@ bool Foam::csmpmStepper::pressureStep
             const label f = lowFace[i];
             // Gas momentum from the passable share (the rest pushes the
             // solid); equal to -dt (p_{f+1} - p_f)/dx where nothing blocks
-            m[i] += 0.5*dt*(J[f] + J[f + 1])/dx;
+            m[i] += dt*(J[f]*(1 - shareL_[f]) + J[f + 1]*shareL_[f + 1])/dx;
             const double a0 = open[f], a1 = open[f + 1];
             const double F0 = pF[f]*(a0*uF[f] + (1 - a0)*usF[f]);
             const double F1 = pF[f + 1]*(a1*uF[f + 1] + (1 - a1)*usF[f + 1]);
             E[i] -= dt*(F1 - F0)/dx;
         }
     }
+
+    mergeCoveredCells(out);
 
     for (const label i : cells_)
     {
@@ -299,3 +342,52 @@ bool Foam::csmpmStepper::pressureStep
 
 
 // ************************************************************************* //
+
+// A cell the solid mostly covers (open fraction o < 1/2) keeps only the gas
+// its open volume holds at the state of its most open neighbour (o_n > o):
+// content o/o_n times the neighbour's; the rest of its mass, momentum and
+// energy (or the deficit) goes to that neighbour.  Conservative, and
+// positive (the neighbour keeps (1 - o/o_n) of its content plus the cell's),
+// so that the few gas a covered cell holds cannot be driven to a negative
+// pressure by the pressure work around it
+void Foam::csmpmStepper::mergeCoveredCells(gasState& out) const
+{
+    const double theta = 0.5;
+    const auto& cellAt = mesh_.cellAt();
+    const label nLat = mesh_.nLattice();
+    for (const label i : cells_)
+    {
+        const double o = max(1 - phiCell_[i], gasVolumeMin_);
+        if (!(o < theta)) continue;
+        label best = -1;
+        double oBest = o;
+        for (label d = 0; d < 3; ++d)
+        {
+            if (!mesh_.active(d)) continue;
+            const label st = mesh_.stride(d);
+            const label f = mesh_.lowFaceOf(d)[i];
+            const label nb[2] = {i - st, i + st};
+            for (const label j : nb)
+            {
+                if (j < 0 || j >= nLat || cellAt[j] < 0) continue;
+                // a neighbour along this line (not across a line's end)
+                const label fj = mesh_.lowFaceOf(d)[j];
+                if (fj != f - 1 && fj != f + 1) continue;
+                const double oj = max(1 - phiCell_[j], gasVolumeMin_);
+                if (oj > oBest)
+                {
+                    oBest = oj;
+                    best = j;
+                }
+            }
+        }
+        if (best < 0) continue;
+        const double r = o/oBest;
+        for (int c = 0; c < 5; ++c)
+        {
+            const double keep = r*out.q[c][best];
+            out.q[c][best] += out.q[c][i] - keep;
+            out.q[c][i] = keep;
+        }
+    }
+}

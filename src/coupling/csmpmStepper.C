@@ -235,6 +235,7 @@ void Foam::csmpmStepper::readGhost
         }
         Jg_.setSize(f.size());
         forAll(f, p) Jg_[p] = f[p];
+        freshStart_ = false;
     }
 }
 
@@ -289,10 +290,15 @@ bool Foam::csmpmStepper::advance
     // 2. Interfaces: reflective share of each face (3.2.3)
     lattice_.deposit(P_, pg_, Kg_);
 
+    couplingFaces();
+
     // 3. Advection with blended fluxes (3.10-3.12)
     for (label d = 0; d < 3; ++d)
     {
-        if (mesh_.active(d)) op_.setPassable(d, &lattice_.open(d));
+        if (mesh_.active(d))
+        {
+            op_.setPassable(d, &openEff_[d], nullptr, &phiCell_);
+        }
     }
     const bool advected = rungeKutta(U, dt, true, Ustar_, rep);
     for (label d = 0; d < 3; ++d) op_.setPassable(d, nullptr);
@@ -333,6 +339,23 @@ bool Foam::csmpmStepper::advance
       + "  solidCells " + std::to_string(lattice_.nSolidCells())
       + "  interfaceFaces " + std::to_string(lattice_.nInterfaceFaces());
     return true;
+}
+
+
+std::vector<double> Foam::csmpmStepper::openFractions()
+{
+    forAll(P_.x, p)
+    {
+        pg_[p] = -lambdaG_[p]*(Jg_[p] - 1);
+        Kg_[p] = lambdaG_[p]*Jg_[p];
+    }
+    lattice_.deposit(P_, pg_, Kg_);
+    std::vector<double> a(mesh_.nLattice(), 1.0);
+    for (label i = 0; i < mesh_.nLattice(); ++i)
+    {
+        a[i] = max(1 - lattice_.phi(i), gasVolumeMin_);
+    }
+    return a;
 }
 
 

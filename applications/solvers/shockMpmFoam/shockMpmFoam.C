@@ -102,6 +102,12 @@ int main(int argc, char *argv[])
             mesh, gas.dict(), gas.op(), std::move(gasOnly), gas.state()
         );
         gas.setStepper(autoPtr<gasStepper>(coupled));
+        if (coupled->freshStart())
+        {
+            // The gas in cells the solid partly covers fills the open
+            // volume only (a restart's fields hold it so already)
+            gas.scaleState(coupled->openFractions());
+        }
     }
 
     // The controlDict's deltaT only matters to Time::run(), which would stop

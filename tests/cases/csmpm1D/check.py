@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """Checks of the 1D CSMPM runs against exact gas dynamics.
 
-  check.py shock CASE TIME U XW   a shock driven into gas at rest (rho 1,
-      p 1, gamma 1.4) by a rigid wall moving at -U from XW at t = 0, or,
-      equivalently, gas moving at +U onto a wall at rest at XW: prints the
+  check.py shock CASE TIME U XW VW   a shock driven into gas at rest
+      (rho 1, p 1, gamma 1.4) by a rigid wall (a piston) moving at VW = -U
+      from XW at t = 0, or gas moving at +U onto a wall at rest (VW = 0)
+      at XW: prints the
       exact post-shock pressure and shock position and the numerical ones
       (shock: the first cell from the left above the mean of the two
       pressures; plateau: mean pressure from 5 cells behind the shock to 5
@@ -43,13 +44,13 @@ if mode == 'shock':
     L = float(open(f'{case}/caseInfo').read().split()[0])
     dx = L/n
     tt = float(t)
-    # wall position: the moving wall goes left with -U (piston) or stays
-    xs = xw - S*tt
+    vw = float(sys.argv[6])
+    xwall = xw + vw*tt
+    xs = xwall - S*tt
     mid = 0.5*(p + ps)
     k = next(i for i in range(n) if P[i] > mid)
     xnum = k*dx
     # plateau between the shock and the wall (the wall's own position)
-    xwall = float(sys.argv[6]) if len(sys.argv) > 6 else xw
     i0, i1 = k + 5, int(xwall/dx) - 5
     plat = sum(P[i0:i1])/max(1, i1 - i0)
     print(f'exact p* {ps:.6f} shock at {xs:.5f}; numerical {xnum:.5f}, plateau {plat:.6f} (cells {i0}-{i1})')
