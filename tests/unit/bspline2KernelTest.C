@@ -497,17 +497,17 @@ TEST(bspline2Kernel, badMeshIsFatalIOError)
         std::string why;
     };
     std::vector<badCase> cases;
-    cases.push_back({"1D graded 1.1", testMeshes::line(testMeshes::graded(8, 1.1)), "off the lattice"});
+    cases.push_back({"1D graded 1.1", testMeshes::line(testMeshes::graded(8, 1.1)), "first offending cell: 1 "});
     {
         // One cell of a uniform 1D lattice moved by 1 % of h
         std::vector<double> xs{0, 1, 2, 3.01, 4, 5, 6};
-        cases.push_back({"1D one vertex moved", testMeshes::line(xs), "first offending cell: 2"});
+        cases.push_back({"1D one vertex moved", testMeshes::line(xs), "first offending cell: 2 "});
     }
-    cases.push_back({"2D quads perturbed", testMeshes::plane(6, true, 0.1), "off the lattice"});
-    cases.push_back({"2D quads graded", testMeshes::plane(6, true, 0.0, 1.05), "first offending cell"});
+    cases.push_back({"2D quads perturbed", testMeshes::plane(6, true, 0.1), "its size along"});
+    cases.push_back({"2D quads graded", testMeshes::plane(6, true, 0.0, 1.05), "first offending cell: 1 "});
     cases.push_back({"2D triangles", testMeshes::plane(4, false, 0.0), "it is a triangle"});
     cases.push_back({"3D tets", testMeshes::box(3, false, 0.0), "it is a tet"});
-    cases.push_back({"3D hexes perturbed", testMeshes::box(3, true, 0.05), "off the lattice"});
+    cases.push_back({"3D hexes perturbed", testMeshes::box(3, true, 0.05), "its size along"});
     {
         const label n[3] = {5, 1, 4};
         const scalar h[3] = {1, 1, 1};

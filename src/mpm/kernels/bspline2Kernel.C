@@ -101,16 +101,17 @@ void Foam::bspline2Kernel::build(const dictionary& dict)
           + mpmMeshView::shapeName(want) + " cells");
     }
     label nNodes = 1;
+    scalar h0[3] = {1, 1, 1};
     for (label a = 0; a < dim_; ++a)
     {
         const label d = axis_[a];
-        const scalar h0 = span(0, a);
+        h0[a] = span(0, a);
         const scalar extent = m.bbMax()[d] - m.bbMin()[d];
-        if (!(h0 > 0))
+        if (!(h0[a] > 0))
         {
             stop(0, string("its size along ") + axisName[d] + " is zero");
         }
-        n_[a] = label(std::round(extent/h0));
+        n_[a] = label(std::round(extent/h0[a]));
         if (n_[a] < 2)
         {
             stop(0, string("the mesh has ") + Foam::name(n_[a])
@@ -122,6 +123,31 @@ void Foam::bspline2Kernel::build(const dictionary& dict)
         rh_[a] = 1/h_[a];
         stride_[a] = nNodes;
         nNodes *= n_[a] + 1;
+    }
+
+    // Every cell the shape and size of cell 0 (the first offending cell of
+    // a graded mesh is the first of another size)
+    for (label c = 0; c < m.nCells(); ++c)
+    {
+        if (m.shape(c) != want)
+        {
+            stop(c, string("it is a ") + mpmMeshView::shapeName(m.shape(c))
+              + "; the " + Foam::name(dim_) + "D lattice needs "
+              + mpmMeshView::shapeName(want) + " cells");
+        }
+        for (label a = 0; a < dim_; ++a)
+        {
+            const scalar hc = span(c, a);
+            // (a size is the difference of two points: twice the
+            // tolerance of one)
+            if (std::abs(hc - h0[a]) > 2*latticeTolerance*h0[a])
+            {
+                stop(c, string("its size along ") + axisName[axis_[a]]
+                  + " is " + Foam::name(hc) + ", cell 0's is "
+                  + Foam::name(h0[a]) + " (relative tolerance "
+                  + Foam::name(2*latticeTolerance) + ")");
+            }
+        }
     }
 
     // Lattice place of every vertex
@@ -145,12 +171,6 @@ void Foam::bspline2Kernel::build(const dictionary& dict)
     const label nCorners = 1 << dim_;
     for (label c = 0; c < m.nCells(); ++c)
     {
-        if (m.shape(c) != want)
-        {
-            stop(c, string("it is a ") + mpmMeshView::shapeName(m.shape(c))
-              + "; the " + Foam::name(dim_) + "D lattice needs "
-              + mpmMeshView::shapeName(want) + " cells");
-        }
         label lo[3] = {labelMax, labelMax, labelMax};
         for (label i = m.cellBegin(c); i < m.cellEnd(c); ++i)
         {
