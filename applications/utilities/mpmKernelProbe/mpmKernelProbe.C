@@ -9,7 +9,7 @@ Group
     mpmFoam utilities
 
 Description
-    Evaluates the MPM transfer kernels (linear, mlsRing, umls: see
+    Evaluates the MPM transfer kernels (linear, mlsRing, umls, bspline2: see
     mpmKernel.H) at probe points on the case's mesh, as the solver would for
     particles at those points, and writes every weight w_vp and gradient
     grad w_vp: the kernel verification of dissertation 2.1.3.5 (Figs 2.5,
@@ -64,7 +64,7 @@ Usage
     \endverbatim
     \table
         Property   | Description                                  | Required | Default
-        kernels    | list of kernels: linear, mlsRing, umls       | yes |
+        kernels    | list of kernels: linear, mlsRing, umls, bspline2 (uniform Cartesian meshes) | yes |
         points     | probe points ((x y z) ...)                   | one of points, line, random |
         line       | start, end [m] and nPoints (>= 2)             | one of points, line, random |
         random     | min, max [m], nPoints (>= 2), seed (default 1) | one of points, line, random |

@@ -205,8 +205,13 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
     energyGrowthBound_ = kinetic + strain + release;
 
     // Particles in cells touching the mesh boundary have one-sided 1-rings:
-    // MLS weights can turn negative there (Fig. 2.6)
-    if (word(kernel_->type()) != "linear")
+    // MLS weights can turn negative there (Fig. 2.6).  (bspline2 folds the
+    // stencil at the boundary: its weights stay exact and non-negative.)
+    if
+    (
+        word(kernel_->type()) != "linear"
+     && word(kernel_->type()) != "bspline2"
+    )
     {
         const labelList& cv = mesh_.cellVertices();
         label nOneSided = 0;
