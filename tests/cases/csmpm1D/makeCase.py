@@ -9,7 +9,7 @@ import os, sys
 a = dict(L=1.0, n=400, left='wall', right='wall', x0=-1.0,
          rhoL=1.0, uL=0.0, pL=1.0, rhoR=1.0, uR=0.0, pR=1.0,
          xs0=0.8, xs1=0.9, rhoS=1000.0, E=1000.0, nu=0.25, vS=0.0,
-         xa=-1.0, CGtol=1e-10, tEnd=0.5, write=0.25, mpmCFL=0.5, order='couplingFirst',
+         xa=-1.0, CGtol=1e-10, kernel="bspline2", tEnd=0.5, write=0.25, mpmCFL=0.5, order='couplingFirst',
          ghostInit='ambient')
 d = sys.argv[1]
 for kv in sys.argv[2:]:
@@ -54,7 +54,7 @@ coupling {{ order {a["order"]}; ghostInit {a["ghostInit"]}; }}
 w('constant/thermophysicalProperties', 'dictionary',
   'thermophysicalProperties', 'gamma 1.4; R 1;\n')
 w('constant/mpmProperties', 'dictionary', 'mpmProperties', f'''
-kernel linear; transfer FLIP; CFL {a["mpmCFL"]};
+kernel {a["kernel"]}; transfer FLIP; CFL {a["mpmCFL"]};
 materials {{ slab {{ type linearElastic; rho {a["rhoS"]}; E {a["E"]}; nu {a["nu"]}; }} }}
 ''')
 w('system/mpmSetParticlesDict', 'dictionary', 'mpmSetParticlesDict', f'''
