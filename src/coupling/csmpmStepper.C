@@ -11,6 +11,16 @@
 #include "IOField.H"
 #include "cloud.H"
 #include "OSspecific.H"
+#include <chrono>
+
+namespace
+{
+    using stageClock = std::chrono::steady_clock;
+    double secondsSince(const stageClock::time_point& t0)
+    {
+        return std::chrono::duration<double>(stageClock::now() - t0).count();
+    }
+}
 
 namespace Foam
 {
@@ -276,6 +286,7 @@ bool Foam::csmpmStepper::advance
 )
 {
     // 1. P2G: nodal masses and v*
+    auto t0 = stageClock::now();
     if (!solver_.beginStep(P_))
     {
         rep.failure = solver_.failure();
@@ -289,10 +300,11 @@ bool Foam::csmpmStepper::advance
 
     // 2. Interfaces: reflective share of each face (3.2.3)
     lattice_.deposit(P_, pg_, Kg_);
-
     couplingFaces();
+    stageTime_[0] += secondsSince(t0);
 
     // 3. Advection with blended fluxes (3.10-3.12)
+    t0 = stageClock::now();
     for (label d = 0; d < 3; ++d)
     {
         if (mesh_.active(d))
@@ -302,18 +314,25 @@ bool Foam::csmpmStepper::advance
     }
     const bool advected = rungeKutta(U, dt, true, Ustar_, rep);
     for (label d = 0; d < 3; ++d) op_.setPassable(d, nullptr);
+    stageTime_[1] += secondsSince(t0);
     if (!advected) return false;
 
     // 6'. Ablation order: the MPM grid update before the coupled solve
+    t0 = stageClock::now();
     if (order_ == stepOrder::mpmFirst)
     {
         solver_.gridUpdate(P_, dt);
     }
+    stageTime_[3] += secondsSince(t0);
 
     // 4.-5. The coupled solve
-    if (!pressureStep(U, dt, out, rep)) return false;
+    t0 = stageClock::now();
+    const bool solved = pressureStep(U, dt, out, rep);
+    stageTime_[2] += secondsSince(t0);
+    if (!solved) return false;
 
     // 6. The MPM grid update after it (3.2.8)
+    t0 = stageClock::now();
     if (order_ == stepOrder::couplingFirst)
     {
         solver_.gridUpdate(P_, dt);
@@ -322,15 +341,22 @@ bool Foam::csmpmStepper::advance
     {
         solver_.applyBoundary();
     }
+    stageTime_[3] += secondsSince(t0);
 
     // 7. G2P; J^g by (3.20) with the velocity gradient that updates F
+    t0 = stageClock::now();
     forAll(P_.x, p) Vold_[p] = P_.V[p];
-    if (!solver_.endStep(P_, dt))
+    const bool moved = solver_.endStep(P_, dt);
+    if (moved)
+    {
+        forAll(P_.x, p) Jg_[p] *= P_.V[p]/Vold_[p];
+    }
+    stageTime_[4] += secondsSince(t0);
+    if (!moved)
     {
         rep.failure = solver_.failure();
         return false;
     }
-    forAll(P_.x, p) Jg_[p] *= P_.V[p]/Vold_[p];
 
     ++nSteps_;
     cgTotal_ += rep.cgIterations;
@@ -451,6 +477,18 @@ void Foam::csmpmStepper::summary() const
         << P_.size() << " particles, CG iterations mean "
         << scalar(cgTotal_)/max(nSteps_, label(1)) << ", max " << cgMax_
         << nl;
+    const char* names[5] =
+        {"P2G and interfaces", "advection", "coupled solve",
+         "MPM grid update", "G2P"};
+    double total = 0;
+    for (const double t : stageTime_) total += t;
+    Info<< "CSMPM cost per step (wall ms):";
+    for (label k = 0; k < 5; ++k)
+    {
+        Info<< "  " << names[k] << " "
+            << 1e3*stageTime_[k]/max(nSteps_, label(1));
+    }
+    Info<< "  total " << 1e3*total/max(nSteps_, label(1)) << nl;
 }
 
 
