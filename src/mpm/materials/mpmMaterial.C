@@ -60,6 +60,22 @@ Foam::scalar Foam::mpmMaterial::waveSpeed() const
 }
 
 
+void Foam::mpmMaterial::plasticStress
+(
+    UList<tensor>&,
+    UList<scalar>&,
+    UList<scalar>&,
+    UList<symmTensor>&,
+    UList<scalar>&,
+    const bool
+) const
+{
+    FatalErrorInFunction
+        << "Material " << name_ << " (" << type() << ") is elastic: it has"
+        << " no return mapping (plastic() is false)" << exit(FatalError);
+}
+
+
 void Foam::mpmMaterial::inverted
 (
     const label p,

@@ -62,16 +62,32 @@ void Foam::mpmSolver::readSettings(const dictionary& dict)
 }
 
 
-void Foam::mpmSolver::updateStress(mpmParticles& P) const
+void Foam::mpmSolver::updateStress
+(
+    mpmParticles& P,
+    const bool returnMap
+) const
 {
     forAll(materials_, k)
     {
         const label b = materialStart_[k];
         const label n = materialStart_[k + 1] - b;
         if (n == 0) continue;
+        SubList<tensor> F(P.F, n, b);
         SubList<symmTensor> sigma(P.sigma, n, b);
         SubList<scalar> psi(P.psi, n, b);
-        materials_[k].stress(SubList<tensor>(P.F, n, b), sigma, psi);
+        const mpmMaterial& mat = materials_[k];
+        if (mat.plastic())
+        {
+            // Return mapping and stress, one call per material range
+            SubList<scalar> epsilonP(P.epsilonP, n, b);
+            SubList<scalar> Jp(P.Jp, n, b);
+            mat.plasticStress(F, epsilonP, Jp, sigma, psi, returnMap);
+        }
+        else
+        {
+            mat.stress(F, sigma, psi);
+        }
     }
 }
 
@@ -163,13 +179,19 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
         else if (!(P.m[p] > 0 && P.m[p] <= big)) bad = "mass";
         else if (!(P.V0[p] > 0 && P.V0[p] <= big)) bad = "V0";
         else if (!(det(P.F[p]) > 0)) bad = "F (det F <= 0)";
+        else if (!(P.Jp[p] > 0 && P.Jp[p] <= big)) bad = "Jp";
+        else if (!(P.epsilonP[p] >= 0 && P.epsilonP[p] <= big))
+        {
+            bad = "epsilonP";
+        }
         if (bad)
         {
             FatalErrorInFunction
                 << "Particle " << p << " of the MPM cloud has a non-finite,"
                 << " out-of-range (beyond 1e30) or non-physical " << bad
                 << ": x " << P.x[p] << ", U " << P.v[p] << ", F " << P.F[p]
-                << ", mass " << P.m[p] << ", V0 " << P.V0[p]
+                << ", mass " << P.m[p] << ", V0 " << P.V0[p] << ", Jp "
+                << P.Jp[p] << ", epsilonP " << P.epsilonP[p]
                 << exit(FatalError);
         }
         const label c = mesh_.findCell(P.x[p], P.cell[p]);
@@ -180,9 +202,11 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
                 << " lies outside the mesh" << exit(FatalError);
         }
         P.cell[p] = c;
-        P.V[p] = det(P.F[p])*P.V0[p];
+        P.V[p] = det(P.F[p])*P.Jp[p]*P.V0[p];
     }
-    updateStress(P);
+    // The stress of the state read (no return mapping: a restart
+    // continues from the state written)
+    updateStress(P, false);
 
     // The energy bound: the energy in motion at the start plus what
     // gravity can release over the mesh's extent along g
@@ -494,13 +518,15 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
         transfer_->g2p(kw_, grid_, P);
     }
 
-    // 9., 10. Volume (2.16) and stress (2.10)
+    // 9., 10. Volume (2.16) and stress (2.10); for plastic materials the
+    // return mapping projects the trial F onto the yield surface, keeping
+    // det(F) Jp and so the volume (Jp = 1 for elastic materials)
     for (label p = 0; p < nP; ++p)
     {
         P.F[p] = Fnew_[p];
-        P.V[p] = det(P.F[p])*P.V0[p];
+        P.V[p] = det(P.F[p])*P.Jp[p]*P.V0[p];
     }
-    updateStress(P);
+    updateStress(P, true);
 
     return true;
 }
