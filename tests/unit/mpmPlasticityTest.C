@@ -587,4 +587,11 @@ TEST(mpmPlasticity, badInputMessages)
         {"-1", "0 <= dilatancyAngle"});
     check(dp + "frictionAngle 30; cohesion -100;", "cohesion",
         {"-100", ">= 0"});
+
+    // F-bar switch, every material
+    check(j2 + "kappaP 1e3; Fbar maybe;", "Fbar", {"maybe", "on or off"});
+    check("type neoHookean; rho 1000; E 1e6; nu 0.3; Fbar 2;", "Fbar",
+        {"on or off"});
+    EXPECT_TRUE(material(j2 + "kappaP 1e3; Fbar on;")->Fbar());
+    EXPECT_FALSE(material(j2 + "kappaP 1e3;")->Fbar());
 }
