@@ -372,7 +372,29 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
     {
         kernel_->compute(P.x, P.cell, kw_);
     }
+    const List<symmTensor> sigmaRead(anyFbar_ ? P.sigma : List<symmTensor>());
+    const List<scalar> psiRead(anyFbar_ ? P.psi : List<scalar>());
     updateStress(P, false);
+
+    // F-bar materials keep the stresses of a cloud that has them (a
+    // restart): the average that made them used the weights of the step
+    // that wrote them, which the weights at the written positions only
+    // approximate (to 1e-7 in F after a restart otherwise)
+    forAll(materials_, k)
+    {
+        if (!materials_[k].Fbar()) continue;
+        bool stressed = false;
+        for (label p = materialStart_[k]; p < materialStart_[k + 1]; ++p)
+        {
+            if (magSqr(sigmaRead[p]) > 0) { stressed = true; break; }
+        }
+        if (!stressed) continue;
+        for (label p = materialStart_[k]; p < materialStart_[k + 1]; ++p)
+        {
+            P.sigma[p] = sigmaRead[p];
+            P.psi[p] = psiRead[p];
+        }
+    }
 
     // The energy bound: the energy in motion at the start plus what
     // gravity can release over the mesh's extent along g
