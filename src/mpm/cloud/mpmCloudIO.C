@@ -69,6 +69,31 @@ void readField
     forAll(f, i) values[i] = f[i];
 }
 
+//- readField, or every value \c deflt when the file is absent (a cloud
+//  written before the field existed)
+template<class T>
+void readFieldOrDefault
+(
+    const polyMesh& mesh,
+    const word& cloudName,
+    const word& name,
+    const label n,
+    const T& deflt,
+    DynamicList<T>& values
+)
+{
+    IOobject io(fieldIO(mesh, cloudName, name, IOobject::MUST_READ));
+    if (io.typeHeaderOk<IOField<T>>(false))
+    {
+        readField(mesh, cloudName, name, n, values);
+    }
+    else
+    {
+        values.setSize(n);
+        forAll(values, i) values[i] = deflt;
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -95,6 +120,8 @@ void Foam::mpmCloudIO::write
     writeField(mesh, cloudName, "V0", P.V0);
     writeField(mesh, cloudName, "mass", P.m);
     writeField(mesh, cloudName, "material", P.material);
+    writeField(mesh, cloudName, "epsilonP", P.epsilonP);
+    writeField(mesh, cloudName, "Jp", P.Jp);
 }
 
 
@@ -131,6 +158,8 @@ bool Foam::mpmCloudIO::read
     readField(mesh, cloudName, "V0", n, P.V0);
     readField(mesh, cloudName, "mass", n, P.m);
     readField(mesh, cloudName, "material", n, P.material);
+    readFieldOrDefault(mesh, cloudName, "epsilonP", n, scalar(0), P.epsilonP);
+    readFieldOrDefault(mesh, cloudName, "Jp", n, scalar(1), P.Jp);
     return true;
 }
 

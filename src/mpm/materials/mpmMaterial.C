@@ -5,6 +5,7 @@
 
 #include "mpmMaterial.H"
 #include "dictionaryChecks.H"
+#include "Switch.H"
 
 #include <cmath>
 
@@ -22,7 +23,8 @@ Foam::mpmMaterial::mpmMaterial(const word& name, const dictionary& dict)
     E_(dictionaryChecks::getInRange(dict, "E", 0, 1e30)),
     nu_(0),
     lambda_(0),
-    mu_(0)
+    mu_(0),
+    Fbar_(false)
 {
     // nu = 0.5 is incompressible (lambda infinite), nu <= -1 makes the
     // shear modulus non-positive
@@ -35,6 +37,23 @@ Foam::mpmMaterial::mpmMaterial(const word& name, const dictionary& dict)
 
     lambda_ = E_*nu_/((1 + nu_)*(1 - 2*nu_));
     mu_ = E_/(2*(1 + nu_));
+
+    // A word (on, off, true, false, yes, no), not a number
+    const string allowedFbar("on or off");
+    const word fbar
+    (
+        dictionaryChecks::getAsOrDefault<word>(dict, "Fbar", "off", allowedFbar)
+    );
+    const Switch sw(fbar, true);
+    if (!sw.valid())
+    {
+        dictionaryChecks::badEntry(dict, "Fbar", fbar, allowedFbar);
+    }
+    Fbar_ = bool(sw);
+    if (Fbar_)
+    {
+        Info<< "    " << name_ << ": F-bar on" << endl;
+    }
 }
 
 
@@ -57,6 +76,22 @@ Foam::autoPtr<Foam::mpmMaterial> Foam::mpmMaterial::New
 Foam::scalar Foam::mpmMaterial::waveSpeed() const
 {
     return std::sqrt((lambda_ + 2*mu_)/rho_);
+}
+
+
+void Foam::mpmMaterial::plasticStress
+(
+    UList<tensor>&,
+    UList<scalar>&,
+    UList<scalar>&,
+    UList<symmTensor>&,
+    UList<scalar>&,
+    const bool
+) const
+{
+    FatalErrorInFunction
+        << "Material " << name_ << " (" << type() << ") is elastic: it has"
+        << " no return mapping (plastic() is false)" << exit(FatalError);
 }
 
 

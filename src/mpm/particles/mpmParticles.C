@@ -10,7 +10,8 @@
 void Foam::mpmParticles::clear()
 {
     x.clear(); v.clear(); B.clear(); F.clear(); m.clear(); V0.clear();
-    V.clear(); sigma.clear(); psi.clear(); material.clear(); cell.clear();
+    V.clear(); sigma.clear(); psi.clear(); epsilonP.clear(); Jp.clear();
+    material.clear(); cell.clear();
 }
 
 
@@ -34,6 +35,8 @@ void Foam::mpmParticles::append
     V.append(det(defGrad)*referenceVolume);
     sigma.append(symmTensor::zero);
     psi.append(0);
+    epsilonP.append(0);
+    Jp.append(1);
     material.append(materialIndex);
     cell.append(celli);
 }
@@ -72,7 +75,8 @@ Foam::labelList Foam::mpmParticles::sortByMaterial(const label nMaterials)
 
     permute(x, order); permute(v, order); permute(B, order); permute(F, order);
     permute(m, order); permute(V0, order); permute(V, order);
-    permute(sigma, order); permute(psi, order); permute(material, order);
+    permute(sigma, order); permute(psi, order); permute(epsilonP, order);
+    permute(Jp, order); permute(material, order);
     permute(cell, order);
     return start;
 }

@@ -62,16 +62,183 @@ void Foam::mpmSolver::readSettings(const dictionary& dict)
 }
 
 
-void Foam::mpmSolver::updateStress(mpmParticles& P) const
+void Foam::mpmSolver::updateStress
+(
+    mpmParticles& P,
+    const bool returnMap
+)
 {
+    if (anyFbar_)
+    {
+        // The averaged volume ratio Jbar of the F-bar particles
+        const label nP = P.size();
+        Fbar_.setSize(nP);
+        Jbar_.setSize(nP);
+        piBar_.setSize(nP);
+        forAll(materials_, k)
+        {
+            if (!materials_[k].Fbar()) continue;
+            for (label p = materialStart_[k]; p < materialStart_[k + 1]; ++p)
+            {
+                Jbar_[p] = det(P.F[p])*P.Jp[p];
+            }
+        }
+        fbarAverage(P, Jbar_);
+    }
+
     forAll(materials_, k)
     {
         const label b = materialStart_[k];
         const label n = materialStart_[k + 1] - b;
         if (n == 0) continue;
+        const mpmMaterial& mat = materials_[k];
+        if (mat.Fbar())
+        {
+            fbarStress(P, k, returnMap);
+            continue;
+        }
+        SubList<tensor> F(P.F, n, b);
         SubList<symmTensor> sigma(P.sigma, n, b);
         SubList<scalar> psi(P.psi, n, b);
-        materials_[k].stress(SubList<tensor>(P.F, n, b), sigma, psi);
+        if (mat.plastic())
+        {
+            // Return mapping and stress, one call per material range
+            SubList<scalar> epsilonP(P.epsilonP, n, b);
+            SubList<scalar> Jp(P.Jp, n, b);
+            mat.plasticStress(F, epsilonP, Jp, sigma, psi, returnMap);
+        }
+        else
+        {
+            mat.stress(F, sigma, psi);
+        }
+    }
+
+    if (anyFbar_)
+    {
+        // The mean stress averaged as Jbar was (the transpose of that
+        // average, the same operator for one density)
+        fbarAverage(P, piBar_);
+        const symmTensor Id(symm(tensor::I - mesh_.offAxes()));
+        forAll(materials_, k)
+        {
+            if (!materials_[k].Fbar()) continue;
+            for (label p = materialStart_[k]; p < materialStart_[k + 1]; ++p)
+            {
+                P.sigma[p] += piBar_[p]*Id;
+            }
+        }
+    }
+}
+
+
+void Foam::mpmSolver::fbarAverage(const mpmParticles& P, UList<scalar>& f)
+{
+    const scalar tiny = VSMALL;
+    forAll(materials_, k)
+    {
+        if (!materials_[k].Fbar()) continue;
+        for (label p = materialStart_[k]; p < materialStart_[k + 1]; ++p)
+        {
+            for (label j = kw_.start[p]; j < kw_.start[p + 1]; ++j)
+            {
+                fbarMass_[kw_.vertex[j]] = 0;
+                fbarSum_[kw_.vertex[j]] = 0;
+            }
+        }
+    }
+    forAll(materials_, k)
+    {
+        if (!materials_[k].Fbar()) continue;
+        for (label p = materialStart_[k]; p < materialStart_[k + 1]; ++p)
+        {
+            const scalar m = P.m[p];
+            const scalar mf = m*f[p];
+            for (label j = kw_.start[p]; j < kw_.start[p + 1]; ++j)
+            {
+                const label i = kw_.vertex[j];
+                fbarMass_[i] += kw_.w[j]*m;
+                fbarSum_[i] += kw_.w[j]*mf;
+            }
+        }
+    }
+    forAll(materials_, k)
+    {
+        if (!materials_[k].Fbar()) continue;
+        for (label p = materialStart_[k]; p < materialStart_[k + 1]; ++p)
+        {
+            scalar s = 0;
+            for (label j = kw_.start[p]; j < kw_.start[p + 1]; ++j)
+            {
+                const label i = kw_.vertex[j];
+                if (mag(fbarMass_[i]) > tiny)
+                {
+                    s += kw_.w[j]*fbarSum_[i]/fbarMass_[i];
+                }
+            }
+            f[p] = s;
+        }
+    }
+}
+
+
+void Foam::mpmSolver::fbarStress
+(
+    mpmParticles& P,
+    const label k,
+    const bool returnMap
+)
+{
+    const mpmMaterial& mat = materials_[k];
+    const label b = materialStart_[k];
+    const label n = materialStart_[k + 1] - b;
+    const tensor offAxes(mesh_.offAxes());
+    const tensor onAxes(tensor::I - offAxes);
+    const symmTensor Id(symm(onAxes));
+    const scalar invDim = 1.0/mesh_.dim();
+
+    // Fbar = (Jbar/J)^(1/dim) F; the scale kept in piBar_ for the plastic
+    // models' F.  A non-positive average (negative kernel weights at an
+    // extreme state) falls back to the particle's own J
+    for (label p = b; p < b + n; ++p)
+    {
+        const scalar J = det(P.F[p])*P.Jp[p];
+        if (!(Jbar_[p] > 0)) Jbar_[p] = J;
+        const scalar alpha = std::pow(Jbar_[p]/J, invDim);
+        Fbar_[p] = (offAxes + alpha*onAxes) & P.F[p];
+        piBar_[p] = alpha;
+    }
+
+    SubList<tensor> Fb(Fbar_, n, b);
+    SubList<symmTensor> sigma(P.sigma, n, b);
+    SubList<scalar> psi(P.psi, n, b);
+    if (mat.plastic())
+    {
+        SubList<scalar> epsilonP(P.epsilonP, n, b);
+        SubList<scalar> Jp(P.Jp, n, b);
+        mat.plasticStress(Fb, epsilonP, Jp, sigma, psi, returnMap);
+        // F_e from the returned Fbar with the particle's own volume ratio
+        if (returnMap)
+        {
+            for (label p = b; p < b + n; ++p)
+            {
+                P.F[p] = (offAxes + (1/piBar_[p])*onAxes) & Fbar_[p];
+            }
+        }
+    }
+    else
+    {
+        mat.stress(Fb, sigma, psi);
+    }
+
+    // The energy-consistent stress: Jbar/J dev(sigma(Fbar)) here, plus the
+    // averaged mean stress (updateStress)
+    for (label p = b; p < b + n; ++p)
+    {
+        const scalar J = det(P.F[p])*P.Jp[p];
+        const symmTensor& s = P.sigma[p];
+        const scalar pi = (s && Id)*invDim;
+        P.sigma[p] = (Jbar_[p]/J)*(s - pi*Id);
+        piBar_[p] = pi;
     }
 }
 
@@ -119,10 +286,20 @@ Foam::mpmSolver::mpmSolver
     cLast_(0),
     cMaterial_(-1),
     vLast_(0),
+    anyFbar_(false),
     energy0_(0),
     energyGrowthBound_(0)
 {
     readSettings(dict);
+    forAll(materials_, k)
+    {
+        if (materials_[k].Fbar()) anyFbar_ = true;
+    }
+    if (anyFbar_)
+    {
+        fbarMass_.setSize(mesh_.nVertices(), Zero);
+        fbarSum_.setSize(mesh_.nVertices(), Zero);
+    }
 }
 
 
@@ -163,13 +340,19 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
         else if (!(P.m[p] > 0 && P.m[p] <= big)) bad = "mass";
         else if (!(P.V0[p] > 0 && P.V0[p] <= big)) bad = "V0";
         else if (!(det(P.F[p]) > 0)) bad = "F (det F <= 0)";
+        else if (!(P.Jp[p] > 0 && P.Jp[p] <= big)) bad = "Jp";
+        else if (!(P.epsilonP[p] >= 0 && P.epsilonP[p] <= big))
+        {
+            bad = "epsilonP";
+        }
         if (bad)
         {
             FatalErrorInFunction
                 << "Particle " << p << " of the MPM cloud has a non-finite,"
                 << " out-of-range (beyond 1e30) or non-physical " << bad
                 << ": x " << P.x[p] << ", U " << P.v[p] << ", F " << P.F[p]
-                << ", mass " << P.m[p] << ", V0 " << P.V0[p]
+                << ", mass " << P.m[p] << ", V0 " << P.V0[p] << ", Jp "
+                << P.Jp[p] << ", epsilonP " << P.epsilonP[p]
                 << exit(FatalError);
         }
         const label c = mesh_.findCell(P.x[p], P.cell[p]);
@@ -180,9 +363,38 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
                 << " lies outside the mesh" << exit(FatalError);
         }
         P.cell[p] = c;
-        P.V[p] = det(P.F[p])*P.V0[p];
+        P.V[p] = det(P.F[p])*P.Jp[p]*P.V0[p];
     }
-    updateStress(P);
+    // The stress of the state read (no return mapping: a restart
+    // continues from the state written); F-bar averages with the weights
+    // at the particles' positions
+    if (anyFbar_)
+    {
+        kernel_->compute(P.x, P.cell, kw_);
+    }
+    const List<symmTensor> sigmaRead(anyFbar_ ? P.sigma : List<symmTensor>());
+    const List<scalar> psiRead(anyFbar_ ? P.psi : List<scalar>());
+    updateStress(P, false);
+
+    // F-bar materials keep the stresses of a cloud that has them (a
+    // restart): the average that made them used the weights of the step
+    // that wrote them, which the weights at the written positions only
+    // approximate (to 1e-7 in F after a restart otherwise)
+    forAll(materials_, k)
+    {
+        if (!materials_[k].Fbar()) continue;
+        bool stressed = false;
+        for (label p = materialStart_[k]; p < materialStart_[k + 1]; ++p)
+        {
+            if (magSqr(sigmaRead[p]) > 0) { stressed = true; break; }
+        }
+        if (!stressed) continue;
+        for (label p = materialStart_[k]; p < materialStart_[k + 1]; ++p)
+        {
+            P.sigma[p] = sigmaRead[p];
+            P.psi[p] = psiRead[p];
+        }
+    }
 
     // The energy bound: the energy in motion at the start plus what
     // gravity can release over the mesh's extent along g
@@ -499,13 +711,15 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
         transfer_->g2p(kw_, grid_, P);
     }
 
-    // 9., 10. Volume (2.16) and stress (2.10)
+    // 9., 10. Volume (2.16) and stress (2.10); for plastic materials the
+    // return mapping projects the trial F onto the yield surface, keeping
+    // det(F) Jp and so the volume (Jp = 1 for elastic materials)
     for (label p = 0; p < nP; ++p)
     {
         P.F[p] = Fnew_[p];
-        P.V[p] = det(P.F[p])*P.V0[p];
+        P.V[p] = det(P.F[p])*P.Jp[p]*P.V0[p];
     }
-    updateStress(P);
+    updateStress(P, true);
 
     return true;
 }
