@@ -20,6 +20,7 @@ Foam::mpmGridBoundary::bcTypeNames
     { bcType::free, "free" },
     { bcType::fixed, "fixed" },
     { bcType::slip, "slip" },
+    { bcType::separable, "separable" },
 });
 
 
@@ -27,10 +28,12 @@ void Foam::mpmGridBoundary::set
 (
     const label v,
     const List<vector>& slipNormals,
-    const bool fixed
+    const bool fixed,
+    const bool separable
 )
 {
     tensor P(I);
+    vector sepN(Zero);
     if (fixed)
     {
         P = tensor::zero;
@@ -50,10 +53,18 @@ void Foam::mpmGridBoundary::set
                 basis[nb++] = n/len;
             }
         }
-        for (label j = 0; j < nb; ++j) P -= basis[j]*basis[j];
+        if (separable && nb == 1)
+        {
+            sepN = basis[0];
+        }
+        else
+        {
+            for (label j = 0; j < nb; ++j) P -= basis[j]*basis[j];
+        }
     }
     vertices_.append(v);
     projection_.append(P);
+    separableNormal_.append(sepN);
 }
 
 
@@ -71,6 +82,8 @@ Foam::mpmGridBoundary::mpmGridBoundary
     List<DynamicList<vector>> normals(nV);
     List<bool> fixed(nV, false);
     List<bool> touched(nV, false);
+    // Every normal of the vertex from a separable condition
+    List<bool> separable(nV, true);
 
     // Every key must match a patch, unless it is a box region
     for (const entry& e : dict)
@@ -87,7 +100,7 @@ Foam::mpmGridBoundary::mpmGridBoundary
                 bd, "box", "two points ((xmin ymin zmin) (xmax ymax zmax))"
             );
             vector n(Zero);
-            if (t == bcType::slip)
+            if (t == bcType::slip || t == bcType::separable)
             {
                 n = dictionaryChecks::getAs<vector>(bd, "normal", "a non-zero vector");
                 if (mag(n) < VSMALL)
@@ -111,6 +124,7 @@ Foam::mpmGridBoundary::mpmGridBoundary
                 ++count;
                 if (t == bcType::fixed) fixed[v] = true;
                 else normals[v].append(n);
+                if (t != bcType::separable) separable[v] = false;
             }
             Info<< "MPM grid condition " << e.keyword() << ": "
                 << bcTypeNames[t] << " on " << count << " vertices in the box"
@@ -134,7 +148,7 @@ Foam::mpmGridBoundary::mpmGridBoundary
         {
             dictionaryChecks::badEntry(dict, e.keyword(),
                 dictionaryChecks::entryText(dict, e.keyword()),
-                "a sub-dictionary { type fixed | slip | free; }");
+                "a sub-dictionary { type fixed | slip | separable | free; }");
         }
     }
 
@@ -167,6 +181,7 @@ Foam::mpmGridBoundary::mpmGridBoundary
                 const label v = pointVertex[p];
                 if (v < 0) continue;
                 touched[v] = true;
+                if (t != bcType::separable) separable[v] = false;
                 if (t == bcType::fixed) fixed[v] = true;
                 else
                 {
@@ -187,7 +202,7 @@ Foam::mpmGridBoundary::mpmGridBoundary
     {
         if (touched[v])
         {
-            set(v, normals[v], fixed[v]);
+            set(v, normals[v], fixed[v], separable[v]);
         }
     }
 }
