@@ -141,11 +141,13 @@ bool Foam::csmpmStepper::pressureStep
                         Ustar_.q[0][l]/max(1 - phiCell_[l], gasVolumeMin_)
                       + Ustar_.q[0][r]/max(1 - phiCell_[r], gasVolumeMin_)
                     );
+                // (gravity: the face's u* takes dt g, as in the gas
+                // stepper, so a face in hydrostatic balance stays at rest)
                 const double uS = 0.5
                    *(
                         Ustar_.q[1 + d][l]/Ustar_.q[0][l]
                       + Ustar_.q[1 + d][r]/Ustar_.q[0][r]
-                    );
+                    ) + dt*g_[d];
                 rhoF_[d][f] = rhoF;
                 uStarF_[d][f] = uS;
                 const double a = open[f];
@@ -263,7 +265,7 @@ bool Foam::csmpmStepper::pressureStep
                 uF[f] = uStarF_[d][f] - dt*(pr - pl)/(dx*rhoF_[d][f]);
                 pF[f] = 0.5*(pl + pr);
                 usF[f] = 0;
-                J[f] = open[f]*(pl - pr);
+                J[f] = open[f]*(pl - pr + rhoF_[d][f]*g_[d]*dx);
                 // Shared by the two cells as their gas contents are (a
                 // cell the solid covers holds little gas and gets little)
                 const double ol = max(1 - phiCell_[l], gasVolumeMin_);
@@ -322,6 +324,16 @@ bool Foam::csmpmStepper::pressureStep
             const double F0 = pF[f]*(a0*uF[f] + (1 - a0)*usF[f]);
             const double F1 = pF[f + 1]*(a1*uF[f + 1] + (1 - a1)*usF[f + 1]);
             E[i] -= dt*(F1 - F0)/dx;
+            if (gravity_)
+            {
+                // The work of gravity on the face's passable share, split
+                // as the momentum is
+                E[i] += dt*g_[d]
+                   *(
+                        a0*rhoF_[d][f]*uF[f]*(1 - shareL_[f])
+                      + a1*rhoF_[d][f + 1]*uF[f + 1]*shareL_[f + 1]
+                    );
+            }
         }
     }
 

@@ -100,6 +100,20 @@ Foam::csmpmStepper::csmpmStepper
     maxIter_ =
         dictionaryChecks::getLabelAtLeast(gasDict, "CGmaxIter", 1000, 1);
 
+    g_ = dictionaryChecks::getBoundedVector
+    (
+        gasDict, "gravity", Zero, 1e10, "an acceleration [m/s^2]"
+    );
+    gravity_ = magSqr(g_) > 0;
+    if (mag(g_ - solver_.gravity()) > 1e-12*max(mag(g_), mag(solver_.gravity())))
+    {
+        WarningInFunction
+            << "The gas's gravity " << g_ << " (" << gasDict.name()
+            << ") differs from the solid's " << solver_.gravity()
+            << " (constant/mpmProperties): buoyancy needs the same on both"
+            << endl;
+    }
+
     const dictionary& cDict = shockMpmDict.subOrEmptyDict("coupling");
     order_ = dictionaryChecks::getEnum
     (

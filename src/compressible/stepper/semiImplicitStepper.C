@@ -30,6 +30,11 @@ Foam::gasSteppers::semiImplicitStepper::semiImplicitStepper
     maxIter_(dictionaryChecks::getLabelAtLeast(dict, "CGmaxIter", 1000, 1)),
     CFL_(dictionaryChecks::getPositive(dict, "CFL", 0.5))
 {
+    g_ = dictionaryChecks::getBoundedVector
+    (
+        dict, "gravity", Zero, 1e10, "an acceleration [m/s^2]"
+    );
+    gravity_ = magSqr(g_) > 0;
     // A step whose relative residual stays above 1e-3 is rejected (below),
     // so a looser tolerance could never give an accepted step
     if (tol_ > 1e-3)
@@ -210,13 +215,18 @@ bool Foam::gasSteppers::semiImplicitStepper::advance
             auto coupleCells = [&](label f, label l, label r)
             {
                 const double rhoF = 0.5*(Ustar_.q[0][l] + Ustar_.q[0][r]);
-                const double uS = 0.5
+                double uS = 0.5
                    *(
                         Ustar_.q[1 + d][l]/Ustar_.q[0][l]
                       + Ustar_.q[1 + d][r]/Ustar_.q[0][r]
                     );
                 rhoF_[d][f] = rhoF;
                 uStarF_[d][f] = uS;
+                if (gravity_)
+                {
+                    uS += dt*g_[d];
+                    uStarF_[d][f] = uS;
+                }
                 const label kl = unknownOf_[l], kr = unknownOf_[r];
                 sys_.couple(kl, kr, A/(rhoF*dx));
                 sys_.source[kl] -= A*uS/dt;
@@ -242,7 +252,8 @@ bool Foam::gasSteppers::semiImplicitStepper::advance
                 const double uI = Ustar_.q[1 + d][i]/rhoI;
                 const double rhoF =
                     low ? 0.5*(rhoG + rhoI) : 0.5*(rhoI + rhoG);
-                const double uS = low ? 0.5*(uG + uI) : 0.5*(uI + uG);
+                double uS = low ? 0.5*(uG + uI) : 0.5*(uI + uG);
+                if (gravity_) uS += dt*g_[d];
                 rhoF_[d][f] = rhoF;
                 uStarF_[d][f] = uS;
                 const label k = unknownOf_[i];
@@ -387,6 +398,33 @@ bool Foam::gasSteppers::semiImplicitStepper::advance
             const label f = lowFace[i];
             m[i] -= dt*(pF[f + 1] - pF[f])/dx;
             E[i] -= dt*(pF[f + 1]*uF[f + 1] - pF[f]*uF[f])/dx;
+        }
+        if (gravity_)
+        {
+            // Half of rho_f g and rho_f u_f g of each of the cell's two
+            // faces, so that the balance p_r - p_l = rho_f g dx of every
+            // face leaves the cells at rest; a boundary face (wall, inlet,
+            // outlet: its pressure is the cell's) carries its half itself
+            const double gd = g_[d];
+            const std::vector<double>& rF = rhoF_[d];
+            for (const label i : cells_)
+            {
+                const label f = lowFace[i];
+                const cartesianMesh::segment& sg = mesh_.segmentOfFace(d, f);
+                const bool periodic =
+                    bcs[sg.lowPatch].kindOf() == gasBoundary::kind::periodic;
+                const bool lowEnd = f == sg.faceOffset
+                    && !periodic && !(sg.lowGhost >= 0);
+                const bool highEnd = f + 1 == sg.faceOffset + sg.length
+                    && !periodic && !(sg.highGhost >= 0);
+                const double r0 = lowEnd ? 0 : rF[f];
+                const bool wrap =
+                    periodic && f + 1 == sg.faceOffset + sg.length;
+                const double r1 =
+                    highEnd ? 0 : (wrap ? rF[sg.faceOffset] : rF[f + 1]);
+                m[i] += dt*gd*0.5*(r0 + r1);
+                E[i] += dt*gd*0.5*(r0*uF[f] + r1*uF[f + 1]);
+            }
         }
     }
 
