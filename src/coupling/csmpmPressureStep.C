@@ -16,58 +16,68 @@ void Foam::csmpmStepper::couplingFaces()
     // solid mass; the face's B-spline weights renormalised over those
     // nodes, so that the solid's force and the gas's add up to the face's
     // pressure jump exactly (momentum conserved to round-off)
-    const scalar tiny = VSMALL;
+    // A node the solid barely reaches (the tail of the kernel) would bring
+    // 1/m_i of many decades into the system: nodes below a thousandth of
+    // the smallest particle's mass take no part
+    // Only the faces and cells the deposit touched are visited; those of
+    // the previous step are reset first
+    const scalar tiny = nodeMassMin_;
     for (label d = 0; d < 3; ++d)
     {
         if (!mesh_.active(d)) continue;
+        const label nf = mesh_.nFaces(d);
+        if (label(Reff_[d].size()) != nf)
+        {
+            Reff_[d].assign(nf, 0.0);
+            openEff_[d].assign(nf, 1.0);
+            wallU_[d].assign(nf, 0.0);
+            wNorm_[d].assign(lattice_.weights(d).size(), 0.0);
+        }
+        for (const label slot : coupledFaces_[d])
+        {
+            const label f = lattice_.faces(d)[slot].f;
+            Reff_[d][f] = 0;
+            openEff_[d][f] = 1;
+            wallU_[d][f] = 0;
+        }
+        coupledFaces_[d].clear();
+
         const std::vector<double>& R = lattice_.R(d);
-        Reff_[d] = R;
         const std::vector<label>& nodes = lattice_.nodes(d);
         const std::vector<double>& w = lattice_.weights(d);
-        wNorm_[d].resize(w.size());
-        for (const auto& fc : lattice_.faces(d))
+        const auto& faces = lattice_.faces(d);
+        for (const label f : lattice_.touchedFaces(d))
         {
-            if (R[fc.f] <= 0) continue;
+            // Boundary and periodic faces: both phases take the condition
+            const label slot = lattice_.faceSlot(d, f);
+            if (slot < 0 || R[f] <= 0) continue;
+            const solidLattice::face& fc = faces[slot];
             double ws = 0;
             for (label e = fc.node0; e < fc.node0 + fc.nNodes; ++e)
             {
                 if (grid.mass[nodes[e]] > tiny) ws += w[e];
             }
-            if (ws <= 0)
-            {
-                Reff_[d][fc.f] = 0;
-                continue;
-            }
-            for (label e = fc.node0; e < fc.node0 + fc.nNodes; ++e)
-            {
-                wNorm_[d][e] = grid.mass[nodes[e]] > tiny ? w[e]/ws : 0;
-            }
-        }
-        // Boundary and periodic faces: both phases take the condition
-        for (const auto& s : mesh_.segments(d))
-        {
-            Reff_[d][s.faceOffset] = 0;
-            Reff_[d][s.faceOffset + s.length] = 0;
-        }
-        openEff_[d].resize(R.size());
-        for (size_t f = 0; f < R.size(); ++f) openEff_[d][f] = 1 - Reff_[d][f];
-
-        // The solid's normal velocity at each coupled face (v*)
-        wallU_[d].assign(R.size(), 0.0);
-        for (const auto& fc : lattice_.faces(d))
-        {
-            if (Reff_[d][fc.f] <= 0) continue;
+            if (ws <= 0) continue;
             double u = 0;
             for (label e = fc.node0; e < fc.node0 + fc.nNodes; ++e)
             {
+                wNorm_[d][e] = grid.mass[nodes[e]] > tiny ? w[e]/ws : 0;
                 u += wNorm_[d][e]*vs[nodes[e]][d];
             }
-            wallU_[d][fc.f] = u;
+            Reff_[d][f] = R[f];
+            openEff_[d][f] = 1 - R[f];
+            // The solid's normal velocity at the face (v*)
+            wallU_[d][f] = u;
+            coupledFaces_[d].push_back(slot);
         }
     }
-    phiCell_.resize(mesh_.nLattice());
-    for (label i = 0; i < mesh_.nLattice(); ++i) phiCell_[i] = lattice_.phi(i);
-
+    if (label(phiCell_.size()) != mesh_.nLattice())
+    {
+        phiCell_.assign(mesh_.nLattice(), 0.0);
+    }
+    for (const label i : phiCells_) phiCell_[i] = 0;
+    phiCells_ = lattice_.touchedCells();
+    for (const label i : phiCells_) phiCell_[i] = lattice_.phi(i);
 }
 
 
@@ -188,7 +198,7 @@ bool Foam::csmpmStepper::pressureStep
     }
 
     // The solid's part: T = W^T G over the faces the solid blocks
-    const scalar tiny = VSMALL;
+    const scalar tiny = nodeMassMin_;
     sys_.beginSolid(grid.mass.size());
     for (label d = 0; d < 3; ++d)
     {
@@ -197,8 +207,9 @@ bool Foam::csmpmStepper::pressureStep
         const std::vector<double>& R = Reff_[d];
         const std::vector<label>& nodes = lattice_.nodes(d);
         const std::vector<double>& w = wNorm_[d];
-        for (const auto& fc : lattice_.faces(d))
+        for (const label slot : coupledFaces_[d])
         {
+            const solidLattice::face& fc = lattice_.faces(d)[slot];
             const double Rf = R[fc.f];
             if (Rf <= 0) continue;
             const label kl = unknownOf_[fc.l], kr = unknownOf_[fc.r];
@@ -298,8 +309,9 @@ bool Foam::csmpmStepper::pressureStep
         const std::vector<label>& nodes = lattice_.nodes(d);
         const std::vector<double>& w = wNorm_[d];
         const std::vector<double>& R = Reff_[d];
-        for (const auto& fc : lattice_.faces(d))
+        for (const label slot : coupledFaces_[d])
         {
+            const solidLattice::face& fc = lattice_.faces(d)[slot];
             if (R[fc.f] <= 0) continue;
             double u = 0;
             for (label e = fc.node0; e < fc.node0 + fc.nNodes; ++e)
@@ -367,7 +379,7 @@ void Foam::csmpmStepper::mergeCoveredCells(gasState& out) const
     const double theta = 0.5;
     const auto& cellAt = mesh_.cellAt();
     const label nLat = mesh_.nLattice();
-    for (const label i : cells_)
+    for (const label i : phiCells_)
     {
         const double o = max(1 - phiCell_[i], gasVolumeMin_);
         if (!(o < theta)) continue;

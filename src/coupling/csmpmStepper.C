@@ -131,6 +131,11 @@ Foam::csmpmStepper::csmpmStepper
     }
     solver_.initialise(P_);
     readGhost(cDict, gasDict);
+    {
+        scalar mMin = GREAT;
+        forAll(P_.m, p) mMin = min(mMin, P_.m[p]);
+        nodeMassMin_ = 1e-3*mMin;
+    }
     (void)U;
 
     const label nLat = mesh_.nLattice();

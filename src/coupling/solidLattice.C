@@ -46,6 +46,9 @@ void Foam::solidLattice::build()
         nodes_[d].clear();
         weights_[d].clear();
         if (!lat_.active(d)) continue;
+        faceSlot_[d].assign(lat_.nFaces(d), -1);
+        faceMark_[d].assign(lat_.nFaces(d), 0);
+        touchedFaces_[d].clear();
         const label st = lat_.stride(d);
         for (const auto& s : lat_.segments(d))
         {
@@ -102,6 +105,7 @@ void Foam::solidLattice::build()
                     weights_[d].push_back(w[0][a]*w[1][b]*w[2][k]);
                 }
                 fc.nNodes = label(nodes_[d].size()) - fc.node0;
+                faceSlot_[d][fc.f] = label(faces_[d].size());
                 faces_[d].push_back(fc);
             }
         }
@@ -114,6 +118,8 @@ void Foam::solidLattice::build()
     Vcell_.assign(nLat, 0.0);
     pg_.assign(nLat, 0.0);
     Kg_.assign(nLat, 0.0);
+    cellMark_.assign(nLat, 0);
+    touchedCells_.clear();
 }
 
 
@@ -142,13 +148,26 @@ void Foam::solidLattice::deposit
 )
 {
     const label nLat = lat_.nLattice();
-    std::fill(Vcell_.begin(), Vcell_.end(), 0.0);
-    std::fill(pg_.begin(), pg_.end(), 0.0);
-    std::fill(Kg_.begin(), Kg_.end(), 0.0);
+
+    // Reset what the previous deposit touched
+    for (const label i : touchedCells_)
+    {
+        Vcell_[i] = 0;
+        pg_[i] = 0;
+        Kg_[i] = 0;
+        cellMark_[i] = 0;
+    }
+    touchedCells_.clear();
     for (label d = 0; d < 3; ++d)
     {
-        if (!lat_.active(d)) continue;
-        std::fill(Vface_[d].begin(), Vface_[d].end(), 0.0);
+        for (const label f : touchedFaces_[d])
+        {
+            Vface_[d][f] = 0;
+            R_[d][f] = 0;
+            open_[d][f] = 1;
+            faceMark_[d][f] = 0;
+        }
+        touchedFaces_[d].clear();
     }
     const auto& cellAt = lat_.cellAt();
     const label n[3] = {lat_.n(0), lat_.n(1), lat_.n(2)};
@@ -188,6 +207,11 @@ void Foam::solidLattice::deposit
             const label idx =
                 (c0[0] + a) + n[0]*((c0[1] + b) + n[1]*(c0[2] + k));
             if (idx >= nLat || cellAt[idx] < 0) continue;
+            if (!cellMark_[idx])
+            {
+                cellMark_[idx] = 1;
+                touchedCells_.push_back(idx);
+            }
             Vcell_[idx] += w*Vp;
             pg_[idx] += w*Vp*pgp[p];
             Kg_[idx] += w*Vp*Kgp[p];
@@ -217,6 +241,11 @@ void Foam::solidLattice::deposit
                 const label idx = ijk[0] + n[0]*(ijk[1] + n[1]*ijk[2]);
                 if (idx >= nLat || cellAt[idx] < 0) continue;
                 const label f = lat_.lowFaceOf(d)[idx] + (high ? 1 : 0);
+                if (!faceMark_[d][f])
+                {
+                    faceMark_[d][f] = 1;
+                    touchedFaces_[d].push_back(f);
+                }
                 Vface_[d][f] += w*Vp;
             }
         }
@@ -235,8 +264,7 @@ void Foam::solidLattice::deposit
             if (e != d && lat_.active(e)) dxt = lat_.dx(e);
         }
         const scalar Af = Vc/lat_.dx(d);
-        const label nf = lat_.nFaces(d);
-        for (label f = 0; f < nf; ++f)
+        for (const label f : touchedFaces_[d])
         {
             const double frac = Vface_[d][f]/Vc;
             double R = 0;
@@ -267,7 +295,7 @@ void Foam::solidLattice::deposit
         }
     }
     nSolidCells_ = 0;
-    for (label i = 0; i < nLat; ++i)
+    for (const label i : touchedCells_)
     {
         if (Vcell_[i] > 0.5*Vc) ++nSolidCells_;
     }
