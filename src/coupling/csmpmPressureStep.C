@@ -350,6 +350,7 @@ bool Foam::csmpmStepper::pressureStep
     }
 
     mergeCoveredCells(out);
+    lastRepaired_ = repairNearSolid(out);
 
     for (const label i : cells_)
     {
@@ -414,4 +415,71 @@ void Foam::csmpmStepper::mergeCoveredCells(gasState& out) const
             out.q[c][i] = keep;
         }
     }
+}
+
+// A cell next to the solid (it or a face neighbour has a solid fraction)
+// whose gas the pressure step left inadmissible (a near-vacuum behind a
+// body in a strong flow, a sliver of gas in a mixed cell) is pooled with
+// the face neighbour holding the most gas: their summed mass, momentum and
+// energy shared by their open volumes.  Conservative; the step fails as
+// before if the pooled state is inadmissible too.  Returns the cells
+// repaired
+Foam::label Foam::csmpmStepper::repairNearSolid(gasState& out) const
+{
+    label nRepaired = 0;
+    const auto& cellAt = mesh_.cellAt();
+    const label nLat = mesh_.nLattice();
+    for (const label c : phiCells_)
+    {
+        // the solid cell and its face neighbours
+        label around[7] = {c, -1, -1, -1, -1, -1, -1};
+        label nA = 1;
+        for (label d = 0; d < 3; ++d)
+        {
+            if (!mesh_.active(d)) continue;
+            const label st = mesh_.stride(d);
+            const label f = mesh_.lowFaceOf(d)[c];
+            for (const label j : {c - st, c + st})
+            {
+                if (j < 0 || j >= nLat || cellAt[j] < 0) continue;
+                const label fj = mesh_.lowFaceOf(d)[j];
+                if (fj == f - 1 || fj == f + 1) around[nA++] = j;
+            }
+        }
+        for (label a = 0; a < nA; ++a)
+        {
+            const label i = around[a];
+            if (out.admissible(i, gamma_)) continue;
+            label best = -1;
+            double mBest = 0;
+            for (label d = 0; d < 3; ++d)
+            {
+                if (!mesh_.active(d)) continue;
+                const label st = mesh_.stride(d);
+                const label f = mesh_.lowFaceOf(d)[i];
+                for (const label j : {i - st, i + st})
+                {
+                    if (j < 0 || j >= nLat || cellAt[j] < 0) continue;
+                    const label fj = mesh_.lowFaceOf(d)[j];
+                    if (fj != f - 1 && fj != f + 1) continue;
+                    if (out.q[0][j] > mBest && out.admissible(j, gamma_))
+                    {
+                        mBest = out.q[0][j];
+                        best = j;
+                    }
+                }
+            }
+            if (best < 0) continue;
+            const double oi = max(1 - phiCell_[i], gasVolumeMin_);
+            const double ob = max(1 - phiCell_[best], gasVolumeMin_);
+            for (int k = 0; k < 5; ++k)
+            {
+                const double sum = out.q[k][i] + out.q[k][best];
+                out.q[k][i] = sum*oi/(oi + ob);
+                out.q[k][best] = sum*ob/(oi + ob);
+            }
+            ++nRepaired;
+        }
+    }
+    return nRepaired;
 }

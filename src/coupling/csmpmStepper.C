@@ -383,6 +383,11 @@ bool Foam::csmpmStepper::advance
     rep.info = "CG residual " + std::to_string(rep.cgResidual)
       + "  solidCells " + std::to_string(lattice_.nSolidCells())
       + "  interfaceFaces " + std::to_string(lattice_.nInterfaceFaces());
+    if (lastRepaired_)
+    {
+        nRepaired_ += lastRepaired_;
+        rep.info += "  repairedCells " + std::to_string(lastRepaired_);
+    }
     return true;
 }
 
@@ -495,7 +500,8 @@ void Foam::csmpmStepper::summary() const
     Info<< "CSMPM coupling summary: " << nSteps_ << " coupled steps, "
         << P_.size() << " particles, CG iterations mean "
         << scalar(cgTotal_)/max(nSteps_, label(1)) << ", max " << cgMax_
-        << nl;
+        << ", gas cells next to the solid repaired (pooled with a"
+        << " neighbour) " << nRepaired_ << nl;
     const char* names[5] =
         {"P2G and interfaces", "advection", "coupled solve",
          "MPM grid update", "G2P"};

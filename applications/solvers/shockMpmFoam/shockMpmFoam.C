@@ -122,6 +122,35 @@ int main(int argc, char *argv[])
 
     while (runTime.run())
     {
+        if (coupled)
+        {
+            // The solid's step too small to reach endTime within maxSteps
+            // (constant/mpmProperties): the state is good, write and stop
+            const scalar dtSolid = coupled->solver().deltaT
+            (
+                coupled->particles()
+            );
+            const scalar remaining =
+                runTime.endTime().value() - runTime.value();
+            if (!(dtSolid > 0) || remaining > coupled->solver().maxSteps()*dtSolid)
+            {
+                gas.toFields();
+                gas.updateDerived();
+                runTime.writeNow();
+                coupled->write();
+                FatalErrorInFunction
+                    << "The solid's time step " << dtSolid << " s at t = "
+                    << runTime.timeName() << " would need more steps to"
+                    << " reach endTime than maxSteps "
+                    << coupled->solver().maxSteps() << " (constant/"
+                    << "mpmProperties): "
+                    << coupled->solver().deltaTReason().c_str() << nl
+                    << "    A stiffer or lighter solid needs smaller steps;"
+                    << " raise maxSteps or soften the material. The state"
+                    << " at t = " << runTime.timeName() << " is written"
+                    << exit(FatalError);
+            }
+        }
         gas.step(runTime);
         if (coupled && runTime.writeTime())
         {

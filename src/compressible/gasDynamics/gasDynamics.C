@@ -366,6 +366,7 @@ void Foam::gasDynamics::step(Time& runTime)
         toFields();
         updateDerived();
         runTime.writeNow();
+        stepper_->writeState();
         FatalErrorInFunction
             << "The stable time step " << dt << " at time "
             << runTime.timeName() << " (CFL " << CFL_ << ", limited by "
@@ -398,6 +399,7 @@ void Foam::gasDynamics::step(Time& runTime)
             toFields();
             updateDerived();
             runTime.writeNow();
+        stepper_->writeState();
             const label celli =
                 rep.failedCell >= 0 ? view_.cellAt()[rep.failedCell] : -1;
             FatalErrorInFunction

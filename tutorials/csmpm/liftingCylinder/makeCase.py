@@ -2,6 +2,8 @@
 """Write the lifting-cylinder case (dissertation 3.3.1, Fig. 3.7; the shock-
 induced lift-off of Falcovitz et al. 1997, Arienti et al. 2003) into
 directory D: python3 makeCase.py D [nx=250] [tEnd=0.255] [write=0.05]
+[rhoS=10.77] [E=1e4] [nu=0.3] [M=3] [maxSteps=1e9] [kernel=bspline2]
+[order=couplingFirst]
 
 Channel [0, 1] x [0, 0.2], walls at the bottom and top, inlet on the left,
 outlet on the right.  Gas rho 1.4, p 1 at rest (sound speed 1), a Mach 3
@@ -12,13 +14,14 @@ gas's), stiff (E 1e4 against pressures of about 10: strains of 1e-3).
 """
 import os, sys
 a = dict(nx=250, tEnd=0.255, write=0.05, rhoS=10.77, E=1.0e4, nu=0.3,
-         kernel='bspline2', order='couplingFirst', perCell=2)
+         kernel='bspline2', order='couplingFirst', perCell=2, M=3.0,
+         maxSteps=1e9)
 d = sys.argv[1]
 for kv in sys.argv[2:]:
     k, v = kv.split('=')
     a[k] = type(a[k])(v)
 nx = int(a['nx']); ny = nx//5; dx = 1.0/nx
-g = 1.4; M = 3.0; rho1, p1 = 1.4, 1.0
+g = 1.4; M = a['M']; rho1, p1 = 1.4, 1.0
 c1 = (g*p1/rho1)**0.5
 p2 = p1*(1 + 2*g/(g + 1)*(M*M - 1))
 rho2 = rho1*(g + 1)*M*M/((g - 1)*M*M + 2)
@@ -62,7 +65,7 @@ coupling {{ order {a["order"]}; ghostInit ambient; }}
 w('constant/thermophysicalProperties', 'dictionary',
   'thermophysicalProperties', 'gamma 1.4; R 1;\n')
 w('constant/mpmProperties', 'dictionary', 'mpmProperties', f'''
-kernel {a["kernel"]}; transfer APIC; CFL 0.5;
+kernel {a["kernel"]}; transfer APIC; CFL 0.5; maxSteps {a["maxSteps"]};
 materials {{ cylinder {{ type neoHookean; rho {a["rhoS"]}; E {a["E"]}; nu {a["nu"]}; }} }}
 boundary {{ walls {{ type separable; }} }}
 ''')
