@@ -4,7 +4,10 @@
 \*---------------------------------------------------------------------------*/
 
 #include "mpmSolver.H"
+#include "mpmParallel.H"
 #include "dictionaryChecks.H"
+#include "Pstream.H"
+#include "ops.H"
 #include <algorithm>
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -92,7 +95,25 @@ Foam::scalar Foam::mpmSolver::mechanicalEnergy
         strain += P.V0[p]*P.psi[p];
         grav -= P.m[p]*(gravity_ & P.x[p]);
     }
+    if (par_)
+    {
+        reduce(kinetic, sumOp<scalar>());
+        reduce(strain, sumOp<scalar>());
+        reduce(grav, sumOp<scalar>());
+    }
     return kinetic + strain + grav;
+}
+
+
+bool Foam::mpmSolver::agreed(const bool ok, const char* what)
+{
+    if (!par_) return ok;
+    const bool all = returnReduce(ok, andOp<bool>());
+    if (!all && ok)
+    {
+        failure_ = string("a particle of another rank ") + what;
+    }
+    return all;
 }
 
 
@@ -106,6 +127,7 @@ Foam::mpmSolver::mpmSolver
 )
 :
     mesh_(mesh),
+    par_(nullptr),
     kernel_(mpmKernel::New(dict, mesh)),
     transfer_(mpmTransfer::New(dict, mesh)),
     boundary_(boundary),
@@ -147,6 +169,19 @@ Foam::label Foam::mpmSolver::materialIndex
 }
 
 
+void Foam::mpmSolver::setParallel(const mpmParallel& par)
+{
+    if (&par.view() != &mesh_)
+    {
+        FatalErrorInFunction
+            << "The MPM solver of a -parallel run needs the parallel grid's"
+            << " view (mpmParallel::view())" << exit(FatalError);
+    }
+    par_ = &par;
+    reduce(hMin_, minOp<scalar>());
+}
+
+
 void Foam::mpmSolver::initialise(mpmParticles& P)
 {
     materialStart_ = P.sortByMaterial(materials_.size());
@@ -179,6 +214,15 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
                 << "Particle " << p << " at " << P.x[p]
                 << " lies outside the mesh" << exit(FatalError);
         }
+        if (par_ && c >= par_->nOwnedCells())
+        {
+            FatalErrorInFunction
+                << "Particle " << p << " (id " << P.id[p] << ") at "
+                << P.x[p] << " of processor " << Pstream::myProcNo()
+                << "'s cloud lies in a cell of another processor: the"
+                << " cloud does not belong to this decomposition"
+                << exit(FatalError);
+        }
         P.cell[p] = c;
         P.V[p] = det(P.F[p])*P.V0[p];
     }
@@ -200,6 +244,12 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
         }
         scalar mass = 0;
         for (const scalar m : P.m) mass += m;
+        if (par_)
+        {
+            reduce(lo, minOp<scalar>());
+            reduce(hi, maxOp<scalar>());
+            reduce(mass, sumOp<scalar>());
+        }
         release = mass*mag(gravity_)*(hi - lo);
     }
     energyGrowthBound_ = kinetic + strain + release;
@@ -218,10 +268,16 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
                 if (mesh_.boundaryVertex(cv[i])) { ++nOneSided; break; }
             }
         }
+        label nP = P.size();
+        if (par_)
+        {
+            reduce(nOneSided, sumOp<label>());
+            reduce(nP, sumOp<label>());
+        }
         if (nOneSided)
         {
             WarningInFunction
-                << nOneSided << " of " << P.size() << " particles lie in cells"
+                << nOneSided << " of " << nP << " particles lie in cells"
                 << " touching the mesh boundary, where the " << kernel_->type()
                 << " kernel's 1-ring is one-sided and weights can turn"
                 << " negative. Mesh an extra layer of cells outside the"
@@ -239,15 +295,15 @@ Foam::scalar Foam::mpmSolver::deltaT(const mpmParticles& P) const
     // speed (and the results of the reference-speed step)
     const scalar deformedMargin = 1.5;
 
-    scalar cMax = 0;
-    cMaterial_ = -1;
+    // Per material (-1: no particle of it here)
+    scalarList cK(materials_.size(), scalar(-1));
     forAll(materials_, k)
     {
         const label b = materialStart_[k];
         const label n = materialStart_[k + 1] - b;
         if (n == 0) continue;
         const mpmMaterial& mat = materials_[k];
-        const scalar c = max
+        cK[k] = max
         (
             mat.waveSpeed(),
             mat.maxWaveSpeed
@@ -255,14 +311,26 @@ Foam::scalar Foam::mpmSolver::deltaT(const mpmParticles& P) const
                 SubList<tensor>(P.F, n, b), SubList<symmTensor>(P.sigma, n, b)
             )/deformedMargin
         );
-        if (c > cMax || cMaterial_ < 0)
-        {
-            cMax = c;
-            cMaterial_ = k;
-        }
     }
     scalar vMax2 = 0;
     for (const vector& v : P.v) vMax2 = max(vMax2, magSqr(v));
+    if (par_)
+    {
+        Pstream::listCombineGather(cK, maxEqOp<scalar>());
+        Pstream::listCombineScatter(cK);
+        reduce(vMax2, maxOp<scalar>());
+    }
+    scalar cMax = 0;
+    cMaterial_ = -1;
+    forAll(cK, k)
+    {
+        if (cK[k] < 0) continue;
+        if (cK[k] > cMax || cMaterial_ < 0)
+        {
+            cMax = cK[k];
+            cMaterial_ = k;
+        }
+    }
     cLast_ = cMax;
     vLast_ = std::sqrt(vMax2);
     const scalar speed = cMax + vLast_;
@@ -318,18 +386,20 @@ bool Foam::mpmSolver::beginStep(mpmParticles& P)
     const label nP = P.size();
     failure_.clear();
 
-    // 1. Locate (walk from the previous cell)
+    // 1. Locate (walk from the previous cell; in parallel the particles
+    // are in the rank's cells since the last step's migration)
     for (label p = 0; p < nP; ++p)
     {
         const label c = mesh_.findCell(P.x[p], P.cell[p]);
-        if (c < 0)
+        if (c < 0 || (par_ && c >= par_->nOwnedCells()))
         {
             failure_ = "particle " + Foam::name(p) + " at "
                 + Foam::name(P.x[p]) + " has left the mesh";
-            return false;
+            break;
         }
         P.cell[p] = c;
     }
+    if (!agreed(failure_.empty(), "has left the mesh")) return false;
 
     // Weights, active vertices
     kernel_->compute(P.x, P.cell, kw_);
@@ -338,6 +408,12 @@ bool Foam::mpmSolver::beginStep(mpmParticles& P)
     // 2. P2G: mass and momentum, then the velocity v* of each vertex; the
     // grid update starts from v~ = v*
     transfer_->p2g(P, kw_, grid_);
+    if (par_)
+    {
+        // Each copy of a shared vertex holds the sum over the ranks
+        par_->sumShared(grid_.mass, &grid_.isActive);
+        par_->sumShared(grid_.velocity, &grid_.isActive);
+    }
     const scalar tiny = VSMALL;
     for (const label i : grid_.active)
     {
@@ -375,6 +451,7 @@ void Foam::mpmSolver::gridUpdate(const mpmParticles& P, const scalar dt)
             grid_.force[i] = f;
         }
     }
+    if (par_) par_->sumShared(grid_.force, &grid_.isActive);
 
     // 6. Grid update (2.11) from v~ (v*, or v* with the coupling's change)
     // and boundary conditions
@@ -418,8 +495,12 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
         {
             failure_ = "non-finite grid velocity at vertex " + Foam::name(i)
                 + " at " + Foam::name(xv[i]);
-            return false;
+            break;
         }
+    }
+    if (!agreed(failure_.empty(), "has a non-finite grid velocity"))
+    {
+        return false;
     }
 
     // MUSL: G2P first, then the velocity gradient from grid velocities
@@ -440,6 +521,7 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
                 grid_.force[kw_.vertex[k]] += kw_.w[k]*mv;
             }
         }
+        if (par_) par_->sumShared(grid_.force, &grid_.isActive);
         for (const label i : grid_.active)
         {
             const scalar m = grid_.mass[i];
@@ -473,13 +555,17 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
                 + Foam::name(P.x[p]) + " would invert: det F = "
                 + Foam::name(J) + " (time step too large, or the material"
                 " is crushed)";
-            if (musl_)
-            {
-                P.v = savedV_;
-                if (transfer_->affine()) P.B = savedB_;
-            }
-            return false;
+            break;
         }
+    }
+    if (!agreed(failure_.empty(), "would invert"))
+    {
+        if (musl_)
+        {
+            P.v = savedV_;
+            if (transfer_->affine()) P.B = savedB_;
+        }
+        return false;
     }
 
     // Positions (2.13): x_p + dt sum w v~_i (linear reproduction)
@@ -501,6 +587,19 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
         P.V[p] = det(P.F[p])*P.V0[p];
     }
     updateStress(P);
+
+    // Particles in another rank's cell move there (one outside all cells
+    // stays: the next step's locate stops the run, as serial)
+    if (par_)
+    {
+        const label before = P.size();
+        par_->migrate(P);
+        const label sent = par_->nMigrated();
+        if (sent || P.size() != before - sent)
+        {
+            materialStart_ = P.sortByMaterial(materials_.size());
+        }
+    }
 
     return true;
 }
@@ -533,6 +632,15 @@ Foam::mpmSolver::totals Foam::mpmSolver::conservation
         t.kinetic += 0.5*m*magSqr(P.v[p]);
         t.strain += P.V0[p]*P.psi[p];
         t.gravitational -= m*(gravity_ & P.x[p]);
+    }
+    if (par_)
+    {
+        reduce(t.mass, sumOp<scalar>());
+        reduce(t.momentum, sumOp<vector>());
+        reduce(t.angularMomentum, sumOp<vector>());
+        reduce(t.kinetic, sumOp<scalar>());
+        reduce(t.strain, sumOp<scalar>());
+        reduce(t.gravitational, sumOp<scalar>());
     }
     return t;
 }
