@@ -161,7 +161,7 @@ bool Foam::functionObjects::mpmParticleProbe::execute()
     forAll(particles_, i)
     {
         const vector D = xs[i] - start_[i];
-        const word pre(Foam::name(i) + "_");
+        const word pre("probe" + Foam::name(i) + "_");
         setResult(pre + "Dx", D.x());
         setResult(pre + "Dy", D.y());
         setResult(pre + "Dz", D.z());
