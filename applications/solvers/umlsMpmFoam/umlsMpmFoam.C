@@ -283,7 +283,12 @@ int main(int argc, char *argv[])
         Info<< "Exchanges (grid sums, migration): "
             << returnReduce(comm, maxOp<scalar>()) << " s on the busiest"
             << " rank, " << returnReduce(comm, sumOp<scalar>())/Pstream::nProcs()
-            << " s on average, of " << wall << " s" << nl;
+            << " s on average, of " << wall << " s" << nl
+            << "Particles moved between ranks: "
+            << returnReduce(par->nMigratedTotal(), sumOp<label>())
+            << " in " << steps << " steps (the busiest rank sent "
+            << returnReduce(par->nMigratedTotal(), maxOp<label>()) << ")"
+            << nl;
     }
     Info<< "End" << nl << endl;
 

@@ -371,7 +371,8 @@ Foam::mpmParallel::mpmParallel(const polyMesh& mesh)
     nMeshVertices_(0),
     nProcBoundaryVertices_(0),
     nHaloVertices_(0),
-    nMigrated_(0)
+    nMigrated_(0),
+    nMigratedTotal_(0)
 {
     if (mesh.nSolutionD() == 1)
     {
@@ -457,7 +458,8 @@ Foam::mpmParallel::mpmParallel(const polyMesh& mesh)
         << returnReduce(nHaloVertices_, maxOp<label>()) << " halo vertices in "
         << returnReduce(haloProc_.size(), maxOp<label>()) << " halo cells, "
         << returnReduce(sharedVertex_.size(), maxOp<label>())
-        << " vertices exchanged with "
+        << " vertices (" << returnReduce(nValuesSent(), maxOp<label>())
+        << " values sent per exchange) shared with "
         << returnReduce(nbrProcs_.size(), maxOp<label>())
         << " neighbour ranks" << nl;
 }
@@ -507,6 +509,7 @@ bool Foam::mpmParallel::migrate(mpmParticles& P) const
     }
     if (nLeave) P.remove(leave);
     nMigrated_ = nLeave;
+    nMigratedTotal_ += nLeave;
 
     const auto t0 = std::chrono::steady_clock::now();
     PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
