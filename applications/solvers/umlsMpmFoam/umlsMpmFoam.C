@@ -200,6 +200,7 @@ int main(int argc, char *argv[])
     mpmState state(mesh, solver, P);
 
     clockTime clock;
+    const scalar cpu0 = runTime.elapsedCpuTime();
     label steps = 0;
     Info<< "Starting time loop" << nl << endl;
 
@@ -277,13 +278,24 @@ int main(int argc, char *argv[])
         << (wall > 0 ? scalar(nTotal)*steps/wall : 0) << " ("
         << steps << " steps, " << nTotal << " particles, " << wall
         << " s)" << nl;
+    const scalar cpu = runTime.elapsedCpuTime() - cpu0;
+    Info<< "Time loop CPU: " << returnReduce(cpu, maxOp<scalar>()) << " s";
+    if (par.valid())
+    {
+        Info<< " on the busiest rank, "
+            << returnReduce(cpu, sumOp<scalar>())/Pstream::nProcs()
+            << " s on average";
+    }
+    Info<< nl;
     if (par.valid())
     {
         const scalar comm = mpmParallel::commTime();
         Info<< "Exchanges (grid sums, migration): "
             << returnReduce(comm, maxOp<scalar>()) << " s on the busiest"
             << " rank, " << returnReduce(comm, sumOp<scalar>())/Pstream::nProcs()
-            << " s on average, of " << wall << " s" << nl
+            << " s on average, of " << wall << " s; their CPU time "
+            << returnReduce(mpmParallel::commCpuTime(), maxOp<scalar>())
+            << " s on the busiest rank" << nl
             << "Particles moved between ranks: "
             << returnReduce(par->nMigratedTotal(), sumOp<label>())
             << " in " << steps << " steps (the busiest rank sent "

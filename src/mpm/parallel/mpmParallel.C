@@ -24,6 +24,13 @@ Foam::scalar& Foam::mpmParallel::commTime()
 }
 
 
+Foam::scalar& Foam::mpmParallel::commCpuTime()
+{
+    static scalar t = 0;
+    return t;
+}
+
+
 Foam::labelListList Foam::mpmParallel::holders(const labelList& globals)
 {
     const label nProcs = Pstream::nProcs();
@@ -511,7 +518,7 @@ bool Foam::mpmParallel::migrate(mpmParticles& P) const
     nMigrated_ = nLeave;
     nMigratedTotal_ += nLeave;
 
-    const auto t0 = std::chrono::steady_clock::now();
+    const exchangeTimer timer;
     PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
     forAll(nbrProcs_, q)
     {
@@ -538,11 +545,6 @@ bool Foam::mpmParallel::migrate(mpmParticles& P) const
         forAll(x, p) P.appendFrom(Q, p);
     }
 
-    commTime() +=
-        std::chrono::duration<scalar>
-        (
-            std::chrono::steady_clock::now() - t0
-        ).count();
     return ok;
 }
 

@@ -19,7 +19,7 @@ void Foam::mpmParallel::combineShared
     const List<bool>* active
 ) const
 {
-    const auto t0 = std::chrono::steady_clock::now();
+    const exchangeTimer timer;
 
     PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
     forAll(nbrProcs_, q)
@@ -54,11 +54,6 @@ void Foam::mpmParallel::combineShared
         values[i] = result;
     }
 
-    commTime() +=
-        std::chrono::duration<scalar>
-        (
-            std::chrono::steady_clock::now() - t0
-        ).count();
 }
 
 

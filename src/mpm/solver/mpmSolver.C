@@ -128,6 +128,7 @@ Foam::mpmSolver::mpmSolver
 :
     mesh_(mesh),
     par_(nullptr),
+    located_(false),
     kernel_(mpmKernel::New(dict, mesh)),
     transfer_(mpmTransfer::New(dict, mesh)),
     boundary_(boundary),
@@ -386,9 +387,11 @@ bool Foam::mpmSolver::beginStep(mpmParticles& P)
     const label nP = P.size();
     failure_.clear();
 
-    // 1. Locate (walk from the previous cell; in parallel the particles
-    // are in the rank's cells since the last step's migration)
-    for (label p = 0; p < nP; ++p)
+    // 1. Locate (walk from the previous cell; in parallel the last
+    // step's migration located them, unless one had left the mesh)
+    const bool located = located_;
+    located_ = false;
+    for (label p = 0; p < nP && !located; ++p)
     {
         const label c = mesh_.findCell(P.x[p], P.cell[p]);
         if (c < 0 || (par_ && c >= par_->nOwnedCells()))
@@ -593,7 +596,7 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
     if (par_)
     {
         const label before = P.size();
-        par_->migrate(P);
+        located_ = par_->migrate(P);
         const label sent = par_->nMigrated();
         if (sent || P.size() != before - sent)
         {
