@@ -162,6 +162,24 @@ int main(int argc, char *argv[])
                 << " decomposition's): run decomposePar -force again"
                 << exit(FatalError);
         }
+        // Without the undecomposed cloud (a time this solver wrote in
+        // parallel: every rank writes its cloud, empty or not) every rank
+        // must hold one
+        if (nRoot < 0 && !returnReduce(found, andOp<bool>()))
+        {
+            if (!found)
+            {
+                Pout<< "No MPM cloud in " << runTime.timePath()/cloud::prefix
+                    /cloudName << endl;
+            }
+            FatalErrorInFunction
+                << "A processor directory lacks its MPM cloud at "
+                << runTime.timeName() << " (the ranks without it are"
+                << " listed above), and the case has no undecomposed cloud"
+                << " there to tell an empty subdomain: the parallel run"
+                << " writes every rank's cloud. Restart from another time,"
+                << " or decompose again" << exit(FatalError);
+        }
         if (!found && P.size() == 0)
         {
             Pout<< "No MPM particles in this subdomain at the start" << endl;
