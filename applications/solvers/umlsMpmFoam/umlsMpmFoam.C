@@ -308,7 +308,7 @@ int main(int argc, char *argv[])
     if (par.valid())
     {
         const scalar comm = mpmParallel::commTime();
-        Info<< "Exchanges (grid sums, migration): "
+        Info<< "Exchanges (grid sums, migration, reductions): "
             << returnReduce(comm, maxOp<scalar>()) << " s on the busiest"
             << " rank, " << returnReduce(comm, sumOp<scalar>())/Pstream::nProcs()
             << " s on average, of " << wall << " s; their CPU time "

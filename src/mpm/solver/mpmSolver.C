@@ -97,9 +97,13 @@ Foam::scalar Foam::mpmSolver::mechanicalEnergy
     }
     if (par_)
     {
-        reduce(kinetic, sumOp<scalar>());
-        reduce(strain, sumOp<scalar>());
-        reduce(grav, sumOp<scalar>());
+        // One reduction (a synchronisation point) for the three sums
+        const mpmParallel::exchangeTimer timer;
+        vector sums(kinetic, strain, grav);
+        reduce(sums, sumOp<vector>());
+        kinetic = sums.x();
+        strain = sums.y();
+        grav = sums.z();
     }
     return kinetic + strain + grav;
 }
@@ -108,6 +112,7 @@ Foam::scalar Foam::mpmSolver::mechanicalEnergy
 bool Foam::mpmSolver::agreed(const bool ok, const char* what)
 {
     if (!par_) return ok;
+    const mpmParallel::exchangeTimer timer;
     const bool all = returnReduce(ok, andOp<bool>());
     if (!all && ok)
     {
@@ -317,9 +322,13 @@ Foam::scalar Foam::mpmSolver::deltaT(const mpmParticles& P) const
     for (const vector& v : P.v) vMax2 = max(vMax2, magSqr(v));
     if (par_)
     {
+        // One gather and scatter for the speeds and |v|max
+        const mpmParallel::exchangeTimer timer;
+        cK.append(vMax2);
         Pstream::listCombineGather(cK, maxEqOp<scalar>());
         Pstream::listCombineScatter(cK);
-        reduce(vMax2, maxOp<scalar>());
+        vMax2 = cK.last();
+        cK.setSize(materials_.size());
     }
     scalar cMax = 0;
     cMaterial_ = -1;
@@ -638,12 +647,29 @@ Foam::mpmSolver::totals Foam::mpmSolver::conservation
     }
     if (par_)
     {
-        reduce(t.mass, sumOp<scalar>());
-        reduce(t.momentum, sumOp<vector>());
-        reduce(t.angularMomentum, sumOp<vector>());
-        reduce(t.kinetic, sumOp<scalar>());
-        reduce(t.strain, sumOp<scalar>());
-        reduce(t.gravitational, sumOp<scalar>());
+        // One gather and scatter for all the sums
+        const mpmParallel::exchangeTimer timer;
+        scalarList sums(10);
+        sums[0] = t.mass;
+        sums[7] = t.kinetic;
+        sums[8] = t.strain;
+        sums[9] = t.gravitational;
+        for (direction c = 0; c < 3; ++c)
+        {
+            sums[1 + c] = t.momentum[c];
+            sums[4 + c] = t.angularMomentum[c];
+        }
+        Pstream::listCombineGather(sums, plusEqOp<scalar>());
+        Pstream::listCombineScatter(sums);
+        t.mass = sums[0];
+        t.kinetic = sums[7];
+        t.strain = sums[8];
+        t.gravitational = sums[9];
+        for (direction c = 0; c < 3; ++c)
+        {
+            t.momentum[c] = sums[1 + c];
+            t.angularMomentum[c] = sums[4 + c];
+        }
     }
     return t;
 }
