@@ -26,8 +26,28 @@ Description
     what the system holds (an unstable step) stops with a message naming
     the last good time written.
 
+    -parallel (decomposePar, then mpirun -np N umlsMpmFoam -parallel):
+    each rank holds the particles in its cells and writes them to
+    processor<N>/<time>/lagrangian/<cloudName>, so reconstructPar merges
+    them and a parallel run restarts from any written time.  The rank's
+    grid is its cells plus a halo of the other ranks' cells around its
+    processor patches (positions fixed at the start), so the linear,
+    mlsRing and umls kernels are the serial ones; the vertex sums of mass,
+    momentum and force are completed over the ranks sharing a vertex (in
+    rank order, so every copy holds the same value), particles that move
+    into another rank's cell move to that rank after each step, dt is the
+    smallest over the ranks and a refused step on one rank stops all
+    (src/mpm/parallel/mpmParallel.H).  The particles' order differs from
+    the serial run's: the cloud's field id (seeding order) matches them.
+    Decompositions it cannot take (1D meshes, processorCyclic patches, a
+    processor mesh without pointProcAddressing), a processor directory
+    without the cloud and a case decomposed for another number of ranks
+    stop with a FatalError.  With particle-weighted decomposition
+    (mpmCellWeights) the ranks get equal shares of the particles.  The
+    log's last lines give the time spent in the exchanges.
+
 Usage
-    umlsMpmFoam [-case dir]
+    umlsMpmFoam [-case dir] [-parallel]
 
 \*---------------------------------------------------------------------------*/
 
@@ -39,6 +59,8 @@ Usage
 #include "dictionaryChecks.H"
 #include "clockTime.H"
 #include "cloud.H"
+#include "mpmParallel.H"
+#include "globalIndex.H"
 
 int main(int argc, char *argv[])
 {
@@ -47,7 +69,6 @@ int main(int argc, char *argv[])
         "Explicit material point method (UMLS-MPM) for solids on the mesh;"
         " settings in constant/mpmProperties"
     );
-    argList::noParallel();
 
     #include "setRootCase.H"
     #include "createTime.H"
@@ -71,27 +92,114 @@ int main(int argc, char *argv[])
     const label logInterval =
         dictionaryChecks::getLabelAtLeast(mpmProperties, "logInterval", 1, 1);
 
-    const mpmMeshView view(mesh);
-    Info<< "MPM mesh view: " << view.dim() << "D, " << view.nVertices()
-        << " vertices, " << view.nCells() << " cells" << nl;
+    // -parallel: the rank's cells and the halo of its neighbours' cells
+    autoPtr<mpmParallel> par;
+    autoPtr<mpmMeshView> serialView;
+    if (Pstream::parRun())
+    {
+        par.reset(new mpmParallel(mesh));
+    }
+    else
+    {
+        serialView.reset(new mpmMeshView(mesh));
+    }
+    const mpmMeshView& view = par.valid() ? par->view() : serialView();
+    Info<< "MPM mesh view: " << view.dim() << "D, "
+        << returnReduce(par.valid() ? par->nMeshVertices() : view.nVertices(), sumOp<label>())
+        << " vertices" << (par.valid() ? " (counting shared ones per rank)" : "")
+        << ", " << returnReduce(mesh.nCells(), sumOp<label>()) << " cells"
+        << nl;
 
     const mpmGridBoundary boundary
     (
-        mesh, view, mpmProperties.subOrEmptyDict("boundary")
+        mesh, view, mpmProperties.subOrEmptyDict("boundary"), par.get()
     );
-    Info<< "MPM grid conditions on " << boundary.size() << " vertices" << nl;
+    Info<< "MPM grid conditions on " << boundary.size() << " vertices"
+        << (par.valid() ? " (of the master rank)" : "") << nl;
 
     mpmSolver solver(view, mpmProperties, boundary);
+    if (par.valid()) solver.setParallel(par());
 
     mpmParticles P;
-    if (!mpmCloudIO::read(mesh, cloudName, P))
+    bool idsRead = true;
+    const bool found = mpmCloudIO::read(mesh, cloudName, P, &idsRead);
+    if (Pstream::parRun())
+    {
+        // Every rank writes its cloud (empty or not) at each write time;
+        // decomposePar writes none for a rank without particles
+        if (!returnReduce(found, orOp<bool>()))
+        {
+            FatalErrorInFunction
+                << "No particles: no processor directory holds an MPM cloud"
+                << " at " << runTime.timeName() << " (e.g. "
+                << runTime.timePath()/cloud::prefix/cloudName << "). Seed"
+                << " one with mpmSetParticles before decomposePar"
+                << exit(FatalError);
+        }
+        // A processor directory without its cloud: the ranks hold fewer
+        // particles than the undecomposed cloud of the same time (where
+        // the case has one: decomposePar's input)
+        const label nRanks = returnReduce(P.size(), sumOp<label>());
+        label nRoot = -1;
+        if (Pstream::master())
+        {
+            nRoot = mpmCloudIO::countParticles
+            (
+                runTime.globalPath()/runTime.timeName()/cloud::prefix
+               /cloudName
+            );
+        }
+        Pstream::scatter(nRoot);
+        if (nRoot >= 0 && nRoot != nRanks)
+        {
+            FatalErrorInFunction
+                << "The processor directories' clouds at "
+                << runTime.timeName() << " hold " << nRanks << " particles;"
+                << " the undecomposed cloud "
+                << runTime.globalPath()/runTime.timeName()/cloud::prefix
+                  /cloudName << " holds " << nRoot << ". A processor"
+                << " directory lacks its cloud (or holds another"
+                << " decomposition's): run decomposePar -force again"
+                << exit(FatalError);
+        }
+        // Without the undecomposed cloud (a time this solver wrote in
+        // parallel: every rank writes its cloud, empty or not) every rank
+        // must hold one
+        if (nRoot < 0 && !returnReduce(found, andOp<bool>()))
+        {
+            if (!found)
+            {
+                Pout<< "No MPM cloud in " << runTime.timePath()/cloud::prefix
+                    /cloudName << endl;
+            }
+            FatalErrorInFunction
+                << "A processor directory lacks its MPM cloud at "
+                << runTime.timeName() << " (the ranks without it are"
+                << " listed above), and the case has no undecomposed cloud"
+                << " there to tell an empty subdomain: the parallel run"
+                << " writes every rank's cloud. Restart from another time,"
+                << " or decompose again" << exit(FatalError);
+        }
+        if (!found && P.size() == 0)
+        {
+            Pout<< "No MPM particles in this subdomain at the start" << endl;
+        }
+
+        // A cloud without ids: number the particles across the ranks
+        if (!returnReduce(idsRead, andOp<bool>()))
+        {
+            const globalIndex gi(P.size());
+            forAll(P.id, p) P.id[p] = gi.toGlobal(p);
+        }
+    }
+    else if (!found)
     {
         FatalErrorInFunction
             << "No particles: " << runTime.timePath()/cloud::prefix/cloudName
             << " holds no MPM cloud. Seed one with mpmSetParticles."
             << exit(FatalError);
     }
-    if (P.size() == 0)
+    if (returnReduce(P.size(), sumOp<label>()) == 0)
     {
         FatalErrorInFunction
             << "No particles: the MPM cloud "
@@ -100,7 +208,8 @@ int main(int argc, char *argv[])
             << exit(FatalError);
     }
     solver.initialise(P);
-    Info<< "Particles: " << P.size() << nl << endl;
+    Info<< "Particles: " << returnReduce(P.size(), sumOp<label>()) << nl
+        << endl;
 
     // The last time whose cloud is on disk (for messages)
     word lastWritten(runTime.timeName());
@@ -109,6 +218,7 @@ int main(int argc, char *argv[])
     mpmState state(mesh, solver, P);
 
     clockTime clock;
+    const scalar cpu0 = runTime.elapsedCpuTime();
     label steps = 0;
     Info<< "Starting time loop" << nl << endl;
 
@@ -165,7 +275,9 @@ int main(int argc, char *argv[])
             Info<< "Step " << runTime.timeIndex() << "  t = "
                 << runTime.timeName() << "  dt = " << dtUsed
                 << "  active vertices = " << solver.nActive()
-                << "  particles = " << P.size() << nl;
+                << "  particles = "
+                << (par.valid() ? returnReduce(P.size(), sumOp<label>()) : P.size())
+                << nl;
         }
 
         if (runTime.writeTime())
@@ -179,10 +291,36 @@ int main(int argc, char *argv[])
     }
 
     const scalar wall = clock.elapsedTime();
+    const label nTotal = returnReduce(P.size(), sumOp<label>());
     Info<< nl << "Particle-steps per second: "
-        << (wall > 0 ? scalar(P.size())*steps/wall : 0) << " ("
-        << steps << " steps, " << P.size() << " particles, " << wall
-        << " s)" << nl << "End" << nl << endl;
+        << (wall > 0 ? scalar(nTotal)*steps/wall : 0) << " ("
+        << steps << " steps, " << nTotal << " particles, " << wall
+        << " s)" << nl;
+    const scalar cpu = runTime.elapsedCpuTime() - cpu0;
+    Info<< "Time loop CPU: " << returnReduce(cpu, maxOp<scalar>()) << " s";
+    if (par.valid())
+    {
+        Info<< " on the busiest rank, "
+            << returnReduce(cpu, sumOp<scalar>())/Pstream::nProcs()
+            << " s on average";
+    }
+    Info<< nl;
+    if (par.valid())
+    {
+        const scalar comm = mpmParallel::commTime();
+        Info<< "Exchanges (grid sums, migration, reductions): "
+            << returnReduce(comm, maxOp<scalar>()) << " s on the busiest"
+            << " rank, " << returnReduce(comm, sumOp<scalar>())/Pstream::nProcs()
+            << " s on average, of " << wall << " s; their CPU time "
+            << returnReduce(mpmParallel::commCpuTime(), maxOp<scalar>())
+            << " s on the busiest rank" << nl
+            << "Particles moved between ranks: "
+            << returnReduce(par->nMigratedTotal(), sumOp<label>())
+            << " in " << steps << " steps (the busiest rank sent "
+            << returnReduce(par->nMigratedTotal(), maxOp<label>()) << ")"
+            << nl;
+    }
+    Info<< "End" << nl << endl;
 
     return 0;
 }

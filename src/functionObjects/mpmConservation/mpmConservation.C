@@ -60,6 +60,7 @@ bool Foam::functionObjects::mpmConservation::execute()
 
     vector xCM(Zero);
     forAll(P.x, p) xCM += P.m[p]*P.x[p];
+    reduce(xCM, sumOp<vector>());
     xCM /= max(t.mass, VSMALL);
     const scalar total = t.kinetic + t.strain + t.gravitational;
 

@@ -7,6 +7,11 @@
 #include "passiveParticleCloud.H"
 #include "IOField.H"
 #include "Time.H"
+#include "ListOps.H"
+
+#include <fstream>
+#include <sstream>
+#include <string>
 
 namespace
 {
@@ -104,6 +109,8 @@ void Foam::mpmCloudIO::write
     const mpmParticles& P
 )
 {
+    // Every rank builds the tet base points (collective), particles or not
+    mesh.tetBasePtIs();
     passiveParticleCloud cloud(mesh, cloudName, IDLList<passiveParticle>());
     forAll(P.x, p)
     {
@@ -122,6 +129,28 @@ void Foam::mpmCloudIO::write
     writeField(mesh, cloudName, "material", P.material);
     writeField(mesh, cloudName, "epsilonP", P.epsilonP);
     writeField(mesh, cloudName, "Jp", P.Jp);
+    writeField(mesh, cloudName, "id", P.id);
+}
+
+
+Foam::label Foam::mpmCloudIO::countParticles(const fileName& dir)
+{
+    for (const char* name : {"id", "U"})
+    {
+        std::ifstream is((dir/name).c_str());
+        if (!is.good()) continue;
+        std::stringstream ss;
+        ss << is.rdbuf();
+        const std::string text(ss.str());
+        // The list's size follows the header's closing brace
+        std::string::size_type pos = text.find("FoamFile");
+        pos = (pos == std::string::npos) ? 0 : text.find('}', pos);
+        if (pos == std::string::npos) return -1;
+        pos = text.find_first_of("0123456789", pos);
+        if (pos == std::string::npos) return -1;
+        return std::stol(text.substr(pos, 20));
+    }
+    return -1;
 }
 
 
@@ -129,7 +158,8 @@ bool Foam::mpmCloudIO::read
 (
     const polyMesh& mesh,
     const word& cloudName,
-    mpmParticles& P
+    mpmParticles& P,
+    bool* idsRead
 )
 {
     P.clear();
@@ -137,12 +167,20 @@ bool Foam::mpmCloudIO::read
     (
         fieldIO(mesh, cloudName, "U", IOobject::MUST_READ)
     );
-    if (!probe.typeHeaderOk<IOField<vector>>(false))
+    const bool here = probe.typeHeaderOk<IOField<vector>>(false);
+
+    // In parallel the cloud's constructor is collective (tet base points):
+    // every rank builds one if any rank holds the cloud (decomposePar
+    // writes none for a subdomain without particles)
+    if (!returnReduce(here, orOp<bool>()))
     {
         return false;
     }
-
     passiveParticleCloud cloud(mesh, cloudName);
+    if (!here)
+    {
+        return false;
+    }
     for (const passiveParticle& p : cloud)
     {
         P.x.append(p.position());
@@ -160,6 +198,18 @@ bool Foam::mpmCloudIO::read
     readField(mesh, cloudName, "material", n, P.material);
     readFieldOrDefault(mesh, cloudName, "epsilonP", n, scalar(0), P.epsilonP);
     readFieldOrDefault(mesh, cloudName, "Jp", n, scalar(1), P.Jp);
+    const bool ids =
+        fieldIO(mesh, cloudName, "id", IOobject::MUST_READ)
+       .typeHeaderOk<IOField<label>>(false);
+    if (ids)
+    {
+        readField(mesh, cloudName, "id", n, P.id);
+    }
+    else
+    {
+        P.id = identity(n);
+    }
+    if (idsRead) *idsRead = ids;
     return true;
 }
 

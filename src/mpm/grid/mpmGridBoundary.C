@@ -13,6 +13,7 @@
 #include "SubField.H"
 #include "Map.H"
 #include "Pair.H"
+#include "mpmParallel.H"
 
 const Foam::Enum<Foam::mpmGridBoundary::bcType>
 Foam::mpmGridBoundary::bcTypeNames
@@ -72,7 +73,8 @@ Foam::mpmGridBoundary::mpmGridBoundary
 (
     const polyMesh& mesh,
     const mpmMeshView& view,
-    const dictionary& dict
+    const dictionary& dict,
+    const mpmParallel* par
 )
 {
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
@@ -191,6 +193,34 @@ Foam::mpmGridBoundary::mpmGridBoundary
                     else patchNormal.insert(v, a);
                 }
             }
+        }
+        if (par)
+        {
+            // The copies of a vertex sum the normals of every rank's faces
+            // (zero where a rank has none); a vertex touched anywhere is
+            // touched on every copy
+            List<vector> an(nV, Zero);
+            scalarList hit(nV, Zero);
+            forAllConstIters(patchNormal, iter)
+            {
+                an[iter.key()] = iter.val();
+                hit[iter.key()] = 1;
+            }
+            if (t == bcType::fixed)
+            {
+                forAll(fixed, v) hit[v] = fixed[v] ? 1 : 0;
+            }
+            par->sumShared(an);
+            par->sumShared(hit);
+            forAll(hit, v)
+            {
+                if (hit[v] <= 0) continue;
+                touched[v] = true;
+                if (t != bcType::separable) separable[v] = false;
+                if (t == bcType::fixed) fixed[v] = true;
+                else normals[v].append(an[v]/max(mag(an[v]), VSMALL));
+            }
+            continue;
         }
         forAllConstIters(patchNormal, iter)
         {

@@ -11,7 +11,7 @@ void Foam::mpmParticles::clear()
 {
     x.clear(); v.clear(); B.clear(); F.clear(); m.clear(); V0.clear();
     V.clear(); sigma.clear(); psi.clear(); epsilonP.clear(); Jp.clear();
-    material.clear(); cell.clear();
+    material.clear(); cell.clear(); id.clear();
 }
 
 
@@ -39,6 +39,17 @@ void Foam::mpmParticles::append
     Jp.append(1);
     material.append(materialIndex);
     cell.append(celli);
+    id.append(id.size());
+}
+
+
+void Foam::mpmParticles::appendFrom(const mpmParticles& Q, const label p)
+{
+    x.append(Q.x[p]); v.append(Q.v[p]); B.append(Q.B[p]); F.append(Q.F[p]);
+    m.append(Q.m[p]); V0.append(Q.V0[p]); V.append(Q.V[p]);
+    sigma.append(Q.sigma[p]); psi.append(Q.psi[p]);
+    epsilonP.append(Q.epsilonP[p]); Jp.append(Q.Jp[p]);
+    material.append(Q.material[p]); cell.append(Q.cell[p]); id.append(Q.id[p]);
 }
 
 
@@ -77,8 +88,33 @@ Foam::labelList Foam::mpmParticles::sortByMaterial(const label nMaterials)
     permute(m, order); permute(V0, order); permute(V, order);
     permute(sigma, order); permute(psi, order); permute(epsilonP, order);
     permute(Jp, order); permute(material, order);
-    permute(cell, order);
+    permute(cell, order); permute(id, order);
     return start;
+}
+
+
+namespace
+{
+template<class T>
+void compact(Foam::DynamicList<T>& a, const Foam::UList<bool>& marked)
+{
+    Foam::label n = 0;
+    forAll(a, i)
+    {
+        if (!marked[i]) a[n++] = a[i];
+    }
+    a.setSize(n);
+}
+}
+
+
+void Foam::mpmParticles::remove(const UList<bool>& marked)
+{
+    compact(x, marked); compact(v, marked); compact(B, marked);
+    compact(F, marked); compact(m, marked); compact(V0, marked);
+    compact(V, marked); compact(sigma, marked); compact(psi, marked);
+    compact(epsilonP, marked); compact(Jp, marked);
+    compact(material, marked); compact(cell, marked); compact(id, marked);
 }
 
 

@@ -4,7 +4,10 @@
 \*---------------------------------------------------------------------------*/
 
 #include "mpmSolver.H"
+#include "mpmParallel.H"
 #include "dictionaryChecks.H"
+#include "Pstream.H"
+#include "ops.H"
 #include <algorithm>
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -146,6 +149,13 @@ void Foam::mpmSolver::fbarAverage(const mpmParticles& P, UList<scalar>& f)
             }
         }
     }
+    if (par_)
+    {
+        // A shared vertex's copies are summed below: none may keep an
+        // earlier call's value
+        fbarMass_ = Zero;
+        fbarSum_ = Zero;
+    }
     forAll(materials_, k)
     {
         if (!materials_[k].Fbar()) continue;
@@ -160,6 +170,12 @@ void Foam::mpmSolver::fbarAverage(const mpmParticles& P, UList<scalar>& f)
                 fbarSum_[i] += kw_.w[j]*mf;
             }
         }
+    }
+    if (par_)
+    {
+        // The average over the kernel support of every rank's particles
+        par_->sumShared(fbarMass_);
+        par_->sumShared(fbarSum_);
     }
     forAll(materials_, k)
     {
@@ -259,7 +275,30 @@ Foam::scalar Foam::mpmSolver::mechanicalEnergy
         strain += P.V0[p]*P.psi[p];
         grav -= P.m[p]*(gravity_ & P.x[p]);
     }
+    if (par_)
+    {
+        // One reduction (a synchronisation point) for the three sums
+        const mpmParallel::exchangeTimer timer;
+        vector sums(kinetic, strain, grav);
+        reduce(sums, sumOp<vector>());
+        kinetic = sums.x();
+        strain = sums.y();
+        grav = sums.z();
+    }
     return kinetic + strain + grav;
+}
+
+
+bool Foam::mpmSolver::agreed(const bool ok, const char* what)
+{
+    if (!par_) return ok;
+    const mpmParallel::exchangeTimer timer;
+    const bool all = returnReduce(ok, andOp<bool>());
+    if (!all && ok)
+    {
+        failure_ = string("a particle of another rank ") + what;
+    }
+    return all;
 }
 
 
@@ -273,6 +312,8 @@ Foam::mpmSolver::mpmSolver
 )
 :
     mesh_(mesh),
+    par_(nullptr),
+    located_(false),
     kernel_(mpmKernel::New(dict, mesh)),
     transfer_(mpmTransfer::New(dict, mesh)),
     boundary_(boundary),
@@ -324,6 +365,19 @@ Foam::label Foam::mpmSolver::materialIndex
 }
 
 
+void Foam::mpmSolver::setParallel(const mpmParallel& par)
+{
+    if (&par.view() != &mesh_)
+    {
+        FatalErrorInFunction
+            << "The MPM solver of a -parallel run needs the parallel grid's"
+            << " view (mpmParallel::view())" << exit(FatalError);
+    }
+    par_ = &par;
+    reduce(hMin_, minOp<scalar>());
+}
+
+
 void Foam::mpmSolver::initialise(mpmParticles& P)
 {
     materialStart_ = P.sortByMaterial(materials_.size());
@@ -361,6 +415,15 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
             FatalErrorInFunction
                 << "Particle " << p << " at " << P.x[p]
                 << " lies outside the mesh" << exit(FatalError);
+        }
+        if (par_ && c >= par_->nOwnedCells())
+        {
+            FatalErrorInFunction
+                << "Particle " << p << " (id " << P.id[p] << ") at "
+                << P.x[p] << " of processor " << Pstream::myProcNo()
+                << "'s cloud lies in a cell of another processor: the"
+                << " cloud does not belong to this decomposition"
+                << exit(FatalError);
         }
         P.cell[p] = c;
         P.V[p] = det(P.F[p])*P.Jp[p]*P.V0[p];
@@ -412,6 +475,12 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
         }
         scalar mass = 0;
         for (const scalar m : P.m) mass += m;
+        if (par_)
+        {
+            reduce(lo, minOp<scalar>());
+            reduce(hi, maxOp<scalar>());
+            reduce(mass, sumOp<scalar>());
+        }
         release = mass*mag(gravity_)*(hi - lo);
     }
     energyGrowthBound_ = kinetic + strain + release;
@@ -435,10 +504,16 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
                 if (mesh_.boundaryVertex(cv[i])) { ++nOneSided; break; }
             }
         }
+        label nP = P.size();
+        if (par_)
+        {
+            reduce(nOneSided, sumOp<label>());
+            reduce(nP, sumOp<label>());
+        }
         if (nOneSided)
         {
             WarningInFunction
-                << nOneSided << " of " << P.size() << " particles lie in cells"
+                << nOneSided << " of " << nP << " particles lie in cells"
                 << " touching the mesh boundary, where the " << kernel_->type()
                 << " kernel's 1-ring is one-sided and weights can turn"
                 << " negative. Mesh an extra layer of cells outside the"
@@ -456,15 +531,15 @@ Foam::scalar Foam::mpmSolver::deltaT(const mpmParticles& P) const
     // speed (and the results of the reference-speed step)
     const scalar deformedMargin = 1.5;
 
-    scalar cMax = 0;
-    cMaterial_ = -1;
+    // Per material (-1: no particle of it here)
+    scalarList cK(materials_.size(), scalar(-1));
     forAll(materials_, k)
     {
         const label b = materialStart_[k];
         const label n = materialStart_[k + 1] - b;
         if (n == 0) continue;
         const mpmMaterial& mat = materials_[k];
-        const scalar c = max
+        cK[k] = max
         (
             mat.waveSpeed(),
             mat.maxWaveSpeed
@@ -472,14 +547,30 @@ Foam::scalar Foam::mpmSolver::deltaT(const mpmParticles& P) const
                 SubList<tensor>(P.F, n, b), SubList<symmTensor>(P.sigma, n, b)
             )/deformedMargin
         );
-        if (c > cMax || cMaterial_ < 0)
-        {
-            cMax = c;
-            cMaterial_ = k;
-        }
     }
     scalar vMax2 = 0;
     for (const vector& v : P.v) vMax2 = max(vMax2, magSqr(v));
+    if (par_)
+    {
+        // One gather and scatter for the speeds and |v|max
+        const mpmParallel::exchangeTimer timer;
+        cK.append(vMax2);
+        Pstream::listCombineGather(cK, maxEqOp<scalar>());
+        Pstream::listCombineScatter(cK);
+        vMax2 = cK.last();
+        cK.setSize(materials_.size());
+    }
+    scalar cMax = 0;
+    cMaterial_ = -1;
+    forAll(cK, k)
+    {
+        if (cK[k] < 0) continue;
+        if (cK[k] > cMax || cMaterial_ < 0)
+        {
+            cMax = cK[k];
+            cMaterial_ = k;
+        }
+    }
     cLast_ = cMax;
     vLast_ = std::sqrt(vMax2);
     const scalar speed = cMax + vLast_;
@@ -535,18 +626,22 @@ bool Foam::mpmSolver::beginStep(mpmParticles& P)
     const label nP = P.size();
     failure_.clear();
 
-    // 1. Locate (walk from the previous cell)
-    for (label p = 0; p < nP; ++p)
+    // 1. Locate (walk from the previous cell; in parallel the last
+    // step's migration located them, unless one had left the mesh)
+    const bool located = located_;
+    located_ = false;
+    for (label p = 0; p < nP && !located; ++p)
     {
         const label c = mesh_.findCell(P.x[p], P.cell[p]);
-        if (c < 0)
+        if (c < 0 || (par_ && c >= par_->nOwnedCells()))
         {
             failure_ = "particle " + Foam::name(p) + " at "
                 + Foam::name(P.x[p]) + " has left the mesh";
-            return false;
+            break;
         }
         P.cell[p] = c;
     }
+    if (!agreed(failure_.empty(), "has left the mesh")) return false;
 
     // Weights, active vertices
     kernel_->compute(P.x, P.cell, kw_);
@@ -555,6 +650,12 @@ bool Foam::mpmSolver::beginStep(mpmParticles& P)
     // 2. P2G: mass and momentum, then the velocity v* of each vertex; the
     // grid update starts from v~ = v*
     transfer_->p2g(P, kw_, grid_);
+    if (par_)
+    {
+        // Each copy of a shared vertex holds the sum over the ranks
+        par_->sumShared(grid_.mass, &grid_.isActive);
+        par_->sumShared(grid_.velocity, &grid_.isActive);
+    }
     const scalar tiny = VSMALL;
     for (const label i : grid_.active)
     {
@@ -592,6 +693,7 @@ void Foam::mpmSolver::gridUpdate(const mpmParticles& P, const scalar dt)
             grid_.force[i] = f;
         }
     }
+    if (par_) par_->sumShared(grid_.force, &grid_.isActive);
 
     // 6. Grid update (2.11) from v~ (v*, or v* with the coupling's change)
     // and boundary conditions
@@ -635,8 +737,12 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
         {
             failure_ = "non-finite grid velocity at vertex " + Foam::name(i)
                 + " at " + Foam::name(xv[i]);
-            return false;
+            break;
         }
+    }
+    if (!agreed(failure_.empty(), "has a non-finite grid velocity"))
+    {
+        return false;
     }
 
     // MUSL: G2P first, then the velocity gradient from grid velocities
@@ -657,6 +763,7 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
                 grid_.force[kw_.vertex[k]] += kw_.w[k]*mv;
             }
         }
+        if (par_) par_->sumShared(grid_.force, &grid_.isActive);
         for (const label i : grid_.active)
         {
             const scalar m = grid_.mass[i];
@@ -690,13 +797,17 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
                 + Foam::name(P.x[p]) + " would invert: det F = "
                 + Foam::name(J) + " (time step too large, or the material"
                 " is crushed)";
-            if (musl_)
-            {
-                P.v = savedV_;
-                if (transfer_->affine()) P.B = savedB_;
-            }
-            return false;
+            break;
         }
+    }
+    if (!agreed(failure_.empty(), "would invert"))
+    {
+        if (musl_)
+        {
+            P.v = savedV_;
+            if (transfer_->affine()) P.B = savedB_;
+        }
+        return false;
     }
 
     // Positions (2.13): x_p + dt sum w v~_i (linear reproduction)
@@ -720,6 +831,19 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
         P.V[p] = det(P.F[p])*P.Jp[p]*P.V0[p];
     }
     updateStress(P, true);
+
+    // Particles in another rank's cell move there (one outside all cells
+    // stays: the next step's locate stops the run, as serial)
+    if (par_)
+    {
+        const label before = P.size();
+        located_ = par_->migrate(P);
+        const label sent = par_->nMigrated();
+        if (sent || P.size() != before - sent)
+        {
+            materialStart_ = P.sortByMaterial(materials_.size());
+        }
+    }
 
     return true;
 }
@@ -752,6 +876,32 @@ Foam::mpmSolver::totals Foam::mpmSolver::conservation
         t.kinetic += 0.5*m*magSqr(P.v[p]);
         t.strain += P.V0[p]*P.psi[p];
         t.gravitational -= m*(gravity_ & P.x[p]);
+    }
+    if (par_)
+    {
+        // One gather and scatter for all the sums
+        const mpmParallel::exchangeTimer timer;
+        scalarList sums(10);
+        sums[0] = t.mass;
+        sums[7] = t.kinetic;
+        sums[8] = t.strain;
+        sums[9] = t.gravitational;
+        for (direction c = 0; c < 3; ++c)
+        {
+            sums[1 + c] = t.momentum[c];
+            sums[4 + c] = t.angularMomentum[c];
+        }
+        Pstream::listCombineGather(sums, plusEqOp<scalar>());
+        Pstream::listCombineScatter(sums);
+        t.mass = sums[0];
+        t.kinetic = sums[7];
+        t.strain = sums[8];
+        t.gravitational = sums[9];
+        for (direction c = 0; c < 3; ++c)
+        {
+            t.momentum[c] = sums[1 + c];
+            t.angularMomentum[c] = sums[4 + c];
+        }
     }
     return t;
 }
