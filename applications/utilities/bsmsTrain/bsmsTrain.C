@@ -145,6 +145,7 @@ Usage
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <random>
 #include <stdexcept>
@@ -195,6 +196,15 @@ double secondsSince(const std::chrono::steady_clock::time_point& t0)
     (
         std::chrono::steady_clock::now() - t0
     ).count();
+}
+
+
+//- CPU seconds of this process (all its threads)
+double cpuSeconds()
+{
+    timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return t.tv_sec + 1e-9*t.tv_nsec;
 }
 
 
@@ -666,6 +676,7 @@ int main(int argc, char *argv[])
     }
     const double rssTrain = procStatusMB("VmRSS");
     const auto tTrain = std::chrono::steady_clock::now();
+    const double cpuTrain = cpuSeconds();
     double validationSeconds = 0;
     double lossSum = 0;
     label lossCount = 0;
@@ -795,6 +806,22 @@ int main(int argc, char *argv[])
             int(step - start), el, el/(step - start), validationSeconds
         );
         Info<< nl << buf << nl;
+        // The CPU time of the training (validation included): on a loaded
+        // machine the cores a run actually got
+        {
+            const scalar cpu = cpuSeconds() - cpuTrain;
+            const scalar cpuAll =
+                parallel ? returnReduce(cpu, sumOp<scalar>()) : cpu;
+            const double wall = secondsSince(tTrain);
+            std::snprintf
+            (
+                buf, sizeof(buf),
+                "Training CPU time: %.2f s in this process, %.2f s summed"
+                " over the %d rank(s) (%.2f cores on average)",
+                cpu, cpuAll, int(nRanks), cpuAll/max(wall, 1e-30)
+            );
+            Info<< buf << nl;
+        }
         if (parallel)
         {
             // The share of the time in the gradient sum (waiting for the
