@@ -103,27 +103,30 @@ Usage
     FatalIOError naming the file and the entry.  Every step's loss goes to
     postProcessing/bsmsTrain/loss.dat (step, loss, learning rate).
 
-    Parallel (-parallel): synchronous data-parallel training.  The data
-    are the undecomposed case's: every rank reads the recorded cases from
-    the case directory (no decomposePar; processor directories, if any,
-    are not used) and sets up the mesh, the graph and the model as a serial
-    run does (the whole mesh on every rank; the dictionaries are read by
-    the master and sent to the others, as OpenFOAM does).  Each step every rank draws the step's pairs and noise
-    from the same generator as a serial run (the same global batch), takes
-    its share of the batch's pairs (rank r of P: samples [r B/P, (r+1) B/P)
-    of the batch of B) through forward and backward, and the gradients,
-    weighted by share/B (the loss is a mean over the batch), are summed
-    over the ranks with Pstream (one float buffer per step, the loss with
-    it: bsmsPstreamSum) before the same Adam step on every rank; so the
+    Parallel (-parallel): synchronous data-parallel training.  The data are
+    the undecomposed case's: every rank reads the recorded cases from the case
+    directory (no decomposePar; processor directories, if any, are not used)
+    and sets up the mesh, the graph and the model as a serial run does (the
+    whole mesh on every rank; the dictionaries are read by the master and sent
+    to the others, as OpenFOAM does).  Each step every rank draws the step's
+    pairs and noise from the same generator as a serial run (the same global
+    batch), takes its share of the batch's pairs (rank r of P: samples [r B/P,
+    (r+1) B/P) of the batch of B) through forward and backward, and the
+    gradients, weighted by share/B (the loss is a mean over the batch), are
+    summed over the ranks with Pstream (one float buffer per step, the loss
+    with it: bsmsPstreamSum) before the same Adam step on every rank; so the
     ranks keep the same parameters (checked at the end by a hash of the
     parameters compared across the ranks) and follow the serial run's loss
     curve up to the rounding of the split sums.  While the normalisers
     accumulate (the first normAccumulations steps) every rank assembles the
     whole batch so that their statistics are the serial run's.  One torch
     thread per rank.  Only the master writes the checkpoint, the model
-    dictionary and postProcessing/bsmsTrain, and runs the validation; the
-    master's clock decides maxTrainTime.  A batch smaller than the number
-    of ranks cannot be shared and stops with a FatalIOError on 'batch'.
+    dictionary and postProcessing/bsmsTrain, and runs the validation (the
+    other ranks wait for it in the next gradient sum); the master's clock
+    decides maxTrainTime.  The log gives the time spent in the gradient sums
+    and the training's CPU time summed over the ranks.  A batch smaller than
+    the number of ranks cannot be shared and stops with a FatalIOError on
+    'batch'.
 
 \*---------------------------------------------------------------------------*/
 
@@ -254,14 +257,16 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
 
     // Parallel: every rank sets up on the undecomposed case (the global
-    // case, not processor<N>), as a serial run does
+    // case, not processor<N>), as a serial run does.  No function objects
+    // (as createTime.H for a utility), the controlDict's libs loaded
     const bool parallel = Pstream::parRun();
     const label nRanks = parallel ? Pstream::nProcs() : 1;
     const label rank = parallel ? Pstream::myProcNo() : 0;
 
     Foam::Time runTime
     (
-        Foam::Time::controlDictName, args.rootPath(), args.globalCaseName()
+        Foam::Time::controlDictName, args.rootPath(), args.globalCaseName(),
+        "system", "constant", false, true
     );
     #include "createPolyMesh.H"
 
