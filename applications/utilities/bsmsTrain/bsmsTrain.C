@@ -58,6 +58,7 @@ Description
 
 Usage
     bsmsTrain [-case dir] [-dict file] [-fresh]
+    mpirun -np N bsmsTrain -parallel [-fresh]   (N <= batch)
 
     system/bsmsTrainDict:
     \verbatim
@@ -99,7 +100,33 @@ Usage
     bsmsFoam and bsmsSurrogate check the states they are fed.  Bad entries, a
     field missing from a case's time directory, a case with fewer than two
     written times and a checkpoint that does not match stop with a
-    FatalIOError naming the file and the entry.  Serial only.
+    FatalIOError naming the file and the entry.  Every step's loss goes to
+    postProcessing/bsmsTrain/loss.dat (step, loss, learning rate).
+
+    Parallel (-parallel): synchronous data-parallel training.  The data are
+    the undecomposed case's: every rank reads the recorded cases from the case
+    directory (no decomposePar; processor directories, if any, are not used)
+    and sets up the mesh, the graph and the model as a serial run does (the
+    whole mesh on every rank; the dictionaries are read by the master and sent
+    to the others, as OpenFOAM does).  Each step every rank draws the step's
+    pairs and noise from the same generator as a serial run (the same global
+    batch), takes its share of the batch's pairs (rank r of P: samples [r B/P,
+    (r+1) B/P) of the batch of B) through forward and backward, and the
+    gradients, weighted by share/B (the loss is a mean over the batch), are
+    summed over the ranks with Pstream (one float buffer per step, the loss
+    with it: bsmsPstreamSum) before the same Adam step on every rank; so the
+    ranks keep the same parameters (checked at the end by a hash of the
+    parameters compared across the ranks) and follow the serial run's loss
+    curve up to the rounding of the split sums.  While the normalisers
+    accumulate (the first normAccumulations steps) every rank assembles the
+    whole batch so that their statistics are the serial run's.  One torch
+    thread per rank.  Only the master writes the checkpoint, the model
+    dictionary and postProcessing/bsmsTrain, and runs the validation (the
+    other ranks wait for it in the next gradient sum); the master's clock
+    decides maxTrainTime.  The log gives the time spent in the gradient sums
+    and the training's CPU time summed over the ranks.  A batch smaller than
+    the number of ranks cannot be shared and stops with a FatalIOError on
+    'batch'.
 
 \*---------------------------------------------------------------------------*/
 
@@ -115,10 +142,13 @@ Usage
 #include "bsmsFieldIO.H"
 #include "bsmsSurrogateModel.H"
 #include "bsmsTrajectory.H"
+#include "bsmsPstreamSum.H"
+#include "Pstream.H"
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <random>
 #include <stdexcept>
@@ -172,6 +202,15 @@ double secondsSince(const std::chrono::steady_clock::time_point& t0)
 }
 
 
+//- CPU seconds of this process (all its threads)
+double cpuSeconds()
+{
+    timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return t.tv_sec + 1e-9*t.tv_nsec;
+}
+
+
 //- A /proc/self/status entry in MB (VmRSS, VmHWM), 0 if unknown
 double procStatusMB(const std::string& key)
 {
@@ -205,7 +244,9 @@ int main(int argc, char *argv[])
         " of recorded cases by one written time; settings in"
         " system/bsmsTrainDict"
     );
-    argList::noParallel();
+    // -parallel: data-parallel training on the undecomposed case (no
+    // processor directories needed)
+    argList::noCheckProcessorDirectories();
     #include "addDictOption.H"
     argList::addBoolOption
     (
@@ -214,14 +255,29 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
-    #include "createTime.H"
+
+    // Parallel: every rank sets up on the undecomposed case (the global
+    // case, not processor<N>), as a serial run does.  No function objects
+    // (as createTime.H for a utility), the controlDict's libs loaded
+    const bool parallel = Pstream::parRun();
+    const label nRanks = parallel ? Pstream::nProcs() : 1;
+    const label rank = parallel ? Pstream::myProcNo() : 0;
+
+    Foam::Time runTime
+    (
+        Foam::Time::controlDictName, args.rootPath(), args.globalCaseName(),
+        "system", "constant", false, true
+    );
     #include "createPolyMesh.H"
 
     using namespace dictionaryChecks;
 
     const word dictName("bsmsTrainDict");
     #include "setSystemMeshDictionaryIO.H"
-    const IOdictionary dict(dictIO);
+    IOdictionary dict(dictIO);
+    // Parallel: the master reads the dictionary and sends it on; the file
+    // name in the other ranks' error messages
+    static_cast<dictionary&>(dict).name() = dict.objectPath();
 
     // The model
     bsmsModelSpec spec;
@@ -307,6 +363,18 @@ int main(int argc, char *argv[])
 
     const label nSteps = getLabelAtLeast(dict, "steps", 2000, 1);
     const label batch = getLabelAtLeast(dict, "batch", 1, 1);
+    if (batch < nRanks)
+    {
+        badEntry
+        (
+            dict, "batch", name(batch),
+            "a batch of at least the number of ranks (" + name(nRanks)
+          + "): each rank trains on its share of every step's batch"
+        );
+    }
+    // This rank's share of every batch: samples [first, first + nMine)
+    const label shareFirst = rank*batch/nRanks;
+    const label nMine = (rank + 1)*batch/nRanks - shareFirst;
     const scalar maxTrainTime = getPositive(dict, "maxTrainTime", 1e30);
     const label ckInterval =
         getLabelAtLeast(dict, "checkpointInterval", nSteps, 1);
@@ -490,8 +558,24 @@ int main(int argc, char *argv[])
     }
     Info<< endl;
 
+    bsmsPstreamSum rankSum;
+    if (parallel)
+    {
+        gnnTorch::setNumThreads(1);
+        Info<< "Parallel run: " << nRanks << " ranks, synchronous data"
+            << " parallel on the undecomposed case's data (processor"
+            << " directories are not used): each rank trains on its share"
+            << " of every step's batch of " << batch << " (this rank "
+            << nMine << " pairs), the gradients summed over the ranks each step"
+            << " (Pstream, " << label(m.net().nParameters()) + 1
+            << " floats); " << gnnTorch::numThreads()
+            << " torch thread per rank" << nl << endl;
+    }
+    const bool master = Pstream::master();
+
     auto save = [&]()
     {
+        if (!master) return;
         mkDir(checkpoint.path());
         try
         {
@@ -511,10 +595,17 @@ int main(int argc, char *argv[])
     };
 
     const fileName outDir(runTime.path()/"postProcessing"/"bsmsTrain");
-    mkDir(outDir);
+    autoPtr<OFstream> lossFile;
+    if (master)
+    {
+        mkDir(outDir);
+        lossFile.reset(new OFstream(outDir/"loss.dat"));
+        lossFile() << "# step loss lr" << nl;
+    }
     // The reference a model must beat: the start state held (persistence)
     for (const bsmsTrajectory& tr : valid)
     {
+        if (!master) break;
         const bsmsRolloutErrors r = bsmsPersistence(m, tr);
         char buf[200];
         std::snprintf
@@ -530,7 +621,7 @@ int main(int argc, char *argv[])
     autoPtr<OFstream> validationFile;
     auto runValidation = [&](const label step, const bool last)
     {
-        if (valid.empty()) return;
+        if (valid.empty() || !master) return;
         if (!validationFile.valid())
         {
             validationFile.reset(new OFstream(outDir/"validation.dat"));
@@ -590,6 +681,7 @@ int main(int argc, char *argv[])
     }
     const double rssTrain = procStatusMB("VmRSS");
     const auto tTrain = std::chrono::steady_clock::now();
+    const double cpuTrain = cpuSeconds();
     double validationSeconds = 0;
     double lossSum = 0;
     label lossCount = 0;
@@ -603,10 +695,26 @@ int main(int argc, char *argv[])
         std::normal_distribution<double> gauss(0.0, 1.0);
         x.clear();
         y.clear();
+        // Parallel: the samples of this rank's share, or all of them while
+        // the normalisers accumulate; the draws of all (the same stream as
+        // a serial run)
+        const bool whole = !parallel || m.net().wholeBatchNeeded();
         for (label b = 0; b < batch; ++b)
         {
             const auto& pr = pairs[pick(rng)];
             const bsmsTrajectory& tr = train[pr.first];
+            if (!whole && (b < shareFirst || b >= shareFirst + nMine))
+            {
+                if (noise > 0)
+                {
+                    const std::size_t nx = tr.states[pr.second].size();
+                    for (std::size_t i = 0; i < nx; ++i)
+                    {
+                        if (noiseStd[i % nState] > 0) gauss(rng);
+                    }
+                }
+                continue;
+            }
             noisy = tr.states[pr.second];
             if (noise > 0)
             {
@@ -622,7 +730,10 @@ int main(int argc, char *argv[])
         double l = 0;
         try
         {
-            l = m.net().trainStep(x, y);
+            l =
+                parallel
+              ? m.net().trainShare(x, y, shareFirst, nMine, batch, rankSum)
+              : m.net().trainStep(x, y);
         }
         catch (const std::exception& e)
         {
@@ -640,9 +751,20 @@ int main(int argc, char *argv[])
         lossSum += l;
         ++lossCount;
         ++step;
+        if (master)
+        {
+            std::snprintf
+            (
+                buf, sizeof(buf), "%d %.9e %.6e", int(step), l,
+                m.net().learningRate()
+            );
+            lossFile() << buf << nl;
+        }
 
         const double el = secondsSince(tTrain) - validationSeconds;
-        const bool outOfTime = el >= maxTrainTime;
+        // The master's clock decides, for all ranks
+        bool outOfTime = el >= maxTrainTime;
+        if (parallel) Pstream::scatter(outOfTime);
         const bool last = step == nSteps || outOfTime;
         if (step % printInterval == 0 || last)
         {
@@ -689,6 +811,40 @@ int main(int argc, char *argv[])
             int(step - start), el, el/(step - start), validationSeconds
         );
         Info<< nl << buf << nl;
+        // The CPU time of the training (validation included): on a loaded
+        // machine the cores a run actually got
+        {
+            const scalar cpu = cpuSeconds() - cpuTrain;
+            const scalar cpuAll =
+                parallel ? returnReduce(cpu, sumOp<scalar>()) : cpu;
+            const double wall = secondsSince(tTrain);
+            std::snprintf
+            (
+                buf, sizeof(buf),
+                "Training CPU time: %.2f s in this process, %.2f s summed"
+                " over the %d rank(s) (%.2f cores on average)",
+                cpu, cpuAll, int(nRanks), cpuAll/max(wall, 1e-30)
+            );
+            Info<< buf << nl;
+        }
+        if (parallel)
+        {
+            // The share of the time in the gradient sum (waiting for the
+            // slower rank included), master and the most of any rank
+            const scalar commMaster = rankSum.seconds();
+            const scalar commMax =
+                returnReduce(scalar(rankSum.seconds()), maxOp<scalar>());
+            std::snprintf
+            (
+                buf, sizeof(buf),
+                "Communication: %d gradient sums of %.3f MB, %.3f s on the"
+                " master (%.1f %% of the training time; the most of any"
+                " rank %.3f s), waiting for the slower rank included",
+                int(rankSum.nCalls()), rankSum.bytes()/1e6, commMaster,
+                100*commMaster/max(el, 1e-30), commMax
+            );
+            Info<< buf << nl;
+        }
         std::snprintf
         (
             buf, sizeof(buf),
@@ -706,8 +862,12 @@ int main(int argc, char *argv[])
     // The loss on every pair without noise
     {
         double sum = 0;
-        for (const auto& pr : pairs)
+        // Parallel: every rank a contiguous share of the pairs
+        const label p0 = rank*nPairs/nRanks;
+        const label p1 = (rank + 1)*nPairs/nRanks;
+        for (label p = p0; p < p1; ++p)
         {
+            const auto& pr = pairs[p];
             const bsmsTrajectory& tr = train[pr.first];
             x.clear();
             y.clear();
@@ -715,9 +875,38 @@ int main(int argc, char *argv[])
             m.appendTarget(tr.states[pr.second], tr.states[pr.second + 1], y);
             sum += m.net().loss(x, y);
         }
+        if (parallel) reduce(sum, sumOp<scalar>());
         std::snprintf(buf, sizeof(buf), "%.6e", sum/nPairs);
         Info<< "Final one-step loss over " << nPairs << " pairs (no noise): "
             << buf << nl;
+    }
+
+    // The ranks hold the same model (the same gradients and Adam steps)
+    if (parallel)
+    {
+        std::snprintf
+        (
+            buf, sizeof(buf), "%016llx",
+            static_cast<unsigned long long>(m.net().parameterHash())
+        );
+        List<word> hashes(nRanks);
+        hashes[rank] = buf;
+        Pstream::gatherList(hashes);
+        if (master)
+        {
+            label nSame = 0;
+            for (const word& h : hashes) nSame += (h == hashes[0]);
+            if (nSame != nRanks)
+            {
+                FatalErrorInFunction
+                    << "The ranks' parameters differ after training (hashes "
+                    << hashes << "): the data-parallel steps went out of"
+                    << " step; the checkpoint is the master's"
+                    << exit(FatalError);
+            }
+            Info<< "Parameters identical on all " << nRanks << " ranks"
+                << " (hash " << hashes[0] << ")" << nl;
+        }
     }
 
     // The training range recorded in the model dictionary

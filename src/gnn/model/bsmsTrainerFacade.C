@@ -99,6 +99,62 @@ double bsmsTrainerFacade::trainStep
 }
 
 
+double bsmsTrainerFacade::trainShare
+(
+    const std::vector<double>& x,
+    const std::vector<double>& y,
+    const std::int64_t first,
+    const std::int64_t n,
+    const std::int64_t nTotal,
+    rankSum& sum
+)
+{
+    fpeTrapsOff noTraps;
+    auto& t = impl_->trainer;
+    const std::int64_t nNodes = t.net().nNodes();
+    const auto X = torch::tensor(x, torch::kFloat64)
+        .reshape({-1, nNodes, t.netConfig().nIn});
+    const auto Y = torch::tensor(y, torch::kFloat64)
+        .reshape({-1, nNodes, t.netConfig().nOut});
+    return t.trainShare
+    (
+        X, Y, first, n, nTotal,
+        [&sum](std::vector<float>& v) { sum(v); }
+    );
+}
+
+
+bool bsmsTrainerFacade::wholeBatchNeeded() const
+{
+    return impl_->trainer.wholeBatchNeeded();
+}
+
+
+std::uint64_t bsmsTrainerFacade::parameterHash() const
+{
+    const std::vector<float> v = impl_->trainer.parameterValues();
+    const unsigned char* b = reinterpret_cast<const unsigned char*>(v.data());
+    std::uint64_t h = 14695981039346656037ULL;
+    for (std::size_t i = 0; i < v.size()*sizeof(float); ++i)
+    {
+        h = (h ^ b[i])*1099511628211ULL;
+    }
+    return h;
+}
+
+
+void setNumThreads(const int n)
+{
+    torch::set_num_threads(n);
+}
+
+
+int numThreads()
+{
+    return torch::get_num_threads();
+}
+
+
 double bsmsTrainerFacade::loss
 (
     const std::vector<double>& x,

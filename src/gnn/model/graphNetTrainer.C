@@ -111,15 +111,8 @@ double graphNetTrainer::learningRate() const
 }
 
 
-double graphNetTrainer::trainStep
-(
-    const torch::Tensor& xIn,
-    const torch::Tensor& yIn
-)
+torch::Tensor graphNetTrainer::prepare(torch::Tensor x, const torch::Tensor& y)
 {
-    torch::Tensor x = checked(xIn, netConfig_.nIn);
-    const torch::Tensor y = checked(yIn, netConfig_.nOut);
-
     if (step_ < config_.normAccumulations)
     {
         inNorm_->accumulate(x);
@@ -151,6 +144,18 @@ double graphNetTrainer::trainStep
         static_cast<torch::optim::AdamOptions&>(group.options())
             .lr(learningRate());
     }
+    return x;
+}
+
+
+double graphNetTrainer::trainStep
+(
+    const torch::Tensor& xIn,
+    const torch::Tensor& yIn
+)
+{
+    const torch::Tensor y = checked(yIn, netConfig_.nOut);
+    const torch::Tensor x = prepare(checked(xIn, netConfig_.nIn), y);
 
     net_->train();
     optimizer_->zero_grad();
@@ -181,6 +186,123 @@ double graphNetTrainer::loss(const torch::Tensor& xIn, const torch::Tensor& yIn)
     net_->eval();
     const torch::Tensor pred = net_->forward(inNorm_->forward(x));
     return torch::mse_loss(pred, outNorm_->forward(y)).item<double>();
+}
+
+
+bool graphNetTrainer::wholeBatchNeeded() const
+{
+    return step_ < config_.normAccumulations || !config_.noiseStd.empty();
+}
+
+
+double graphNetTrainer::trainShare
+(
+    const torch::Tensor& xIn,
+    const torch::Tensor& yIn,
+    const std::int64_t first,
+    const std::int64_t n,
+    const std::int64_t nTotal,
+    const std::function<void(std::vector<float>&)>& sumOverRanks
+)
+{
+    torch::Tensor x = checked(xIn, netConfig_.nIn);
+    torch::Tensor y = checked(yIn, netConfig_.nOut);
+    if (x.dim() == 2) x = x.unsqueeze(0);
+    if (y.dim() == 2) y = y.unsqueeze(0);
+    const std::int64_t nx = x.size(0);
+    const bool whole = nx == nTotal && y.size(0) == nTotal;
+    const bool share = nx == n && y.size(0) == n;
+    if
+    (
+        n < 1 || first < 0 || first + n > nTotal
+     || !(whole || share) || (!whole && wholeBatchNeeded())
+    )
+    {
+        throw std::runtime_error
+        (
+            "graphNetTrainer: the share [" + std::to_string(first) + ", "
+          + std::to_string(first + n) + ") of a batch of "
+          + std::to_string(nTotal) + " samples, given "
+          + std::to_string(nx) + " input and "
+          + std::to_string(y.size(0)) + " target samples"
+          + (wholeBatchNeeded() ? " (the whole batch is needed)" : "")
+        );
+    }
+
+    x = prepare(x, y);
+    if (whole)
+    {
+        x = x.narrow(0, first, n);
+        y = y.narrow(0, first, n);
+    }
+
+    net_->train();
+    optimizer_->zero_grad();
+    const torch::Tensor pred = net_->forward(inNorm_->forward(x));
+    const torch::Tensor l = torch::mse_loss(pred, outNorm_->forward(y));
+    l.backward();
+
+    // The share's gradients and loss, weighted by its share of the batch,
+    // in one buffer; summed over the ranks; back into the gradients
+    const float w = float(double(n)/double(nTotal));
+    std::vector<torch::Tensor> params = net_->parameters();
+    std::int64_t nValues = 1;
+    for (const torch::Tensor& p : params)
+    {
+        if (p.grad().defined()) nValues += p.numel();
+    }
+    std::vector<float>& buf = shareBuf_;
+    buf.resize(nValues);
+    {
+        torch::NoGradGuard noGrad;
+        std::int64_t o = 0;
+        for (const torch::Tensor& p : params)
+        {
+            if (!p.grad().defined()) continue;
+            const torch::Tensor g =
+                (p.grad()*w).to(torch::kFloat32).contiguous();
+            std::copy
+            (
+                g.data_ptr<float>(), g.data_ptr<float>() + g.numel(),
+                buf.begin() + o
+            );
+            o += g.numel();
+        }
+        buf[o] = l.item<float>()*w;
+
+        sumOverRanks(buf);
+
+        o = 0;
+        for (torch::Tensor& p : params)
+        {
+            if (!p.grad().defined()) continue;
+            torch::Tensor g = p.mutable_grad();
+            g.copy_
+            (
+                torch::from_blob
+                (
+                    buf.data() + o, g.sizes(),
+                    torch::TensorOptions().dtype(torch::kFloat32)
+                )
+            );
+            o += g.numel();
+        }
+    }
+    optimizer_->step();
+    ++step_;
+    return buf.back();
+}
+
+
+std::vector<float> graphNetTrainer::parameterValues() const
+{
+    std::vector<float> v;
+    for (const torch::Tensor& p : net_->parameters())
+    {
+        const torch::Tensor c = p.detach().to(torch::kFloat32).contiguous();
+        v.insert(v.end(), c.data_ptr<float>(), c.data_ptr<float>() + c.numel());
+    }
+    return v;
 }
 
 
