@@ -76,6 +76,8 @@ actions
     { name light; type cellZoneSet; action new; source setToCellZone; set light; }
 );
 ''')
+with open(os.path.join(d, 'caseInfo'), 'w') as f:
+    f.write(f'{n}\n')
 c, s_ = math.cos(math.radians(30)), math.sin(math.radians(30))
 ell, pv = [], []
 for j in range(n):
