@@ -208,6 +208,7 @@ Foam::csmpmStepper::csmpmStepper
     pg_.setSize(P_.size());
     Kg_.setSize(P_.size());
     Vold_.setSize(P_.size());
+    checkInlets(shockMpmDict);
 
     Info<< "CSMPM coupling: " << P_.size() << " particles, "
         << view_.nVertices() << " MPM nodes on the gas lattice, order "
@@ -265,6 +266,58 @@ void Foam::csmpmStepper::readGhost
         Jg_.setSize(f.size());
         forAll(f, p) Jg_[p] = f[p];
         freshStart_ = false;
+    }
+}
+
+
+void Foam::csmpmStepper::checkInlets(const dictionary& shockMpmDict) const
+{
+    // The cells next to an inlet face hold the inflow state the inlet
+    // imposes: a solid there would be pushed through the boundary
+    const PtrList<gasBoundary>& bcs = op_.boundaries();
+    std::vector<char> inletCell(mesh_.nLattice(), 0);
+    std::vector<label> inletPatch(mesh_.nLattice(), -1);
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!mesh_.active(d)) continue;
+        const label st = mesh_.stride(d);
+        for (const auto& s : mesh_.segments(d))
+        {
+            if (bcs[s.lowPatch].kindOf() == gasBoundary::kind::inlet)
+            {
+                inletCell[s.start] = 1;
+                inletPatch[s.start] = s.lowPatch;
+            }
+            if (bcs[s.highPatch].kindOf() == gasBoundary::kind::inlet)
+            {
+                const label last = s.start + (s.length - 1)*st;
+                inletCell[last] = 1;
+                inletPatch[last] = s.highPatch;
+            }
+        }
+    }
+    forAll(P_.x, p)
+    {
+        label ijk[3] = {0, 0, 0};
+        for (label d = 0; d < 3; ++d)
+        {
+            if (!mesh_.active(d)) continue;
+            const scalar s = (P_.x[p][d] - mesh_.origin()[d])/mesh_.dx(d);
+            ijk[d] = min(max(label(std::floor(s)), 0), mesh_.n(d) - 1);
+        }
+        const label i = ijk[0] + mesh_.n(0)*(ijk[1] + mesh_.n(1)*ijk[2]);
+        if (inletCell[i])
+        {
+            const dictionary& bDict = shockMpmDict.subDict("boundaries");
+            FatalIOErrorInFunction(bDict)
+                << "Particle " << p << " at " << P_.x[p] << " lies in a cell"
+                << " on the inlet patch "
+                << bcs[inletPatch[i]].patchName() << " (entry '"
+                << bcs[inletPatch[i]].patchName() << "' of "
+                << bDict.name() << "): seed the solid at least one cell"
+                << " away from inlets (system/mpmSetParticlesDict)"
+                << exit(FatalIOError);
+        }
     }
 }
 
