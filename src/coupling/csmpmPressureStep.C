@@ -243,12 +243,81 @@ bool Foam::csmpmStepper::pressureStep
         return false;
     }
 
-    // (3.36): v = v* - dt M^-1 T p on the solid's nodes
-    sys_.applyT(p_, Tp_);
-    for (label k = 0; k < sys_.nRows(); ++k)
+    if (!localGradient_)
     {
-        const label i = sys_.rowNode(k);
-        vs[i][sys_.rowDir(k)] -= dt*Tp_[k]/massScaled_[i];
+        // (3.36): v = v* - dt M^-1 T p on the solid's nodes
+        sys_.applyT(p_, Tp_);
+        for (label k = 0; k < sys_.nRows(); ++k)
+        {
+            const label i = sys_.rowNode(k);
+            vs[i][sys_.rowDir(k)] -= dt*Tp_[k]/massScaled_[i];
+        }
+    }
+    else
+    {
+        // The ablation of Fig. 3.3 (right): each node by the local
+        // pressure gradient, v -= dt grad p/rho_s, the gradient the mean
+        // of the differences across the node of the cells around it, rho_s
+        // the node's mass over its P2G volume
+        const kernelWeights& kw = solver_.weights();
+        if (nodeVolume_.size() != grid.mass.size())
+        {
+            nodeVolume_.setSize(grid.mass.size(), Zero);
+        }
+        for (const label i : grid.active) nodeVolume_[i] = 0;
+        forAll(P_.x, p)
+        {
+            for (label j = kw.start[p]; j < kw.start[p + 1]; ++j)
+            {
+                nodeVolume_[kw.vertex[j]] += kw.w[j]*P_.V[p];
+            }
+        }
+        const List<vector>& xv = view_.vertices();
+        const auto& cellAt = mesh_.cellAt();
+        for (label k = 0; k < sys_.nRows(); ++k)
+        {
+            const label i = sys_.rowNode(k);
+            const label d = sys_.rowDir(k);
+            label c[3] = {0, 0, 0};
+            for (label e = 0; e < 3; ++e)
+            {
+                if (!mesh_.active(e)) continue;
+                c[e] = label(std::lround
+                (
+                    (xv[i][e] - mesh_.origin()[e])/mesh_.dx(e)
+                ));
+            }
+            double g = 0;
+            label nPairs = 0;
+            for (label a = 0; a < 2; ++a)
+            for (label b = 0; b < 2; ++b)
+            {
+                label lo[3], hi[3];
+                label ab[2] = {a, b}, q = 0;
+                bool ok = true;
+                for (label e = 0; e < 3; ++e)
+                {
+                    if (!mesh_.active(e)) { lo[e] = hi[e] = 0; continue; }
+                    if (e == d) { lo[e] = c[e] - 1; hi[e] = c[e]; continue; }
+                    lo[e] = hi[e] = c[e] - 1 + (q < 2 ? ab[q++] : 0);
+                }
+                if (mesh_.nDims() < 3 && b == 1) continue;
+                if (mesh_.nDims() < 2 && a == 1) continue;
+                for (label e = 0; e < 3; ++e)
+                {
+                    ok = ok && lo[e] >= 0 && hi[e] < mesh_.n(e);
+                }
+                if (!ok) continue;
+                const label il = lo[0] + mesh_.n(0)*(lo[1] + mesh_.n(1)*lo[2]);
+                const label ih = hi[0] + mesh_.n(0)*(hi[1] + mesh_.n(1)*hi[2]);
+                if (cellAt[il] < 0 || cellAt[ih] < 0) continue;
+                g += p_[unknownOf_[ih]] - p_[unknownOf_[il]];
+                ++nPairs;
+            }
+            if (!nPairs || !(nodeVolume_[i] > 0)) continue;
+            const double rho = grid.mass[i]/nodeVolume_[i];
+            vs[i][d] -= dt*(g/nPairs)/(mesh_.dx(d)*rho);
+        }
     }
 
     // (3.21) gas face velocities; the solid's velocity at each face

@@ -119,6 +119,24 @@ Foam::csmpmStepper::csmpmStepper
     (
         cDict, "order", stepOrderNames, stepOrder::couplingFirst
     );
+    {
+        const word su
+        (
+            dictionaryChecks::getAsOrDefault<word>
+            (
+                cDict, "solidUpdate", "eliminated",
+                "eliminated or localGradient"
+            )
+        );
+        if (su != "eliminated" && su != "localGradient")
+        {
+            dictionaryChecks::badEntry
+            (
+                cDict, "solidUpdate", su, "eliminated or localGradient"
+            );
+        }
+        localGradient_ = su == "localGradient";
+    }
 
     if (!mpmCloudIO::read(mesh, cloudName_, P_) || P_.size() == 0)
     {

@@ -11,7 +11,8 @@ the ambient pressure and the ring starts in equilibrium with the gas;
 unstressed: J^g = 1, the ring starts with no pressure against the gas's 1.
 """
 import os, sys
-a = dict(n=128, tEnd=0.7, write=0.35, ghostInit='ambient', kernel='bspline2')
+a = dict(n=128, tEnd=0.7, write=0.35, ghostInit='ambient', kernel='bspline2',
+         solidUpdate='eliminated')
 d = sys.argv[1]
 for kv in sys.argv[2:]:
     k, v = kv.split('=')
@@ -56,7 +57,7 @@ w('system/fvSolution', 'dictionary', 'fvSolution', '\n')
 w('system/shockMpmDict', 'dictionary', 'shockMpmDict', f'''
 gas {{ stepper semiImplicit; scheme WENO5; timeIntegration RK3; CFL 0.5; CGtolerance 1e-12; }}
 boundaries {{ }}
-coupling {{ order couplingFirst; ghostInit {a["ghostInit"]}; }}
+coupling {{ order couplingFirst; ghostInit {a["ghostInit"]}; solidUpdate {a["solidUpdate"]}; }}
 ''')
 w('constant/thermophysicalProperties', 'dictionary',
   'thermophysicalProperties', 'gamma 1.4; R 1;\n')
