@@ -11,7 +11,6 @@
 void Foam::csmpmStepper::couplingFaces()
 {
     const mpmGrid& grid = solver_.grid();
-    const List<vector>& vs = grid.newVelocity;
     // The faces the solid couples to: R > 0 and some node of the face with
     // solid mass; the face's B-spline weights renormalised over those
     // nodes, so that the solid's force and the gas's add up to the face's
@@ -30,7 +29,6 @@ void Foam::csmpmStepper::couplingFaces()
         {
             Reff_[d].assign(nf, 0.0);
             openEff_[d].assign(nf, 1.0);
-            wallU_[d].assign(nf, 0.0);
             wNorm_[d].assign(lattice_.weights(d).size(), 0.0);
         }
         for (const label slot : coupledFaces_[d])
@@ -38,7 +36,6 @@ void Foam::csmpmStepper::couplingFaces()
             const label f = lattice_.faces(d)[slot].f;
             Reff_[d][f] = 0;
             openEff_[d][f] = 1;
-            wallU_[d][f] = 0;
         }
         coupledFaces_[d].clear();
 
@@ -58,16 +55,12 @@ void Foam::csmpmStepper::couplingFaces()
                 if (grid.mass[nodes[e]] > tiny) ws += w[e];
             }
             if (ws <= 0) continue;
-            double u = 0;
             for (label e = fc.node0; e < fc.node0 + fc.nNodes; ++e)
             {
                 wNorm_[d][e] = grid.mass[nodes[e]] > tiny ? w[e]/ws : 0;
-                u += wNorm_[d][e]*vs[nodes[e]][d];
             }
             Reff_[d][f] = R[f];
             openEff_[d][f] = 1 - R[f];
-            // The solid's normal velocity at the face (v*)
-            wallU_[d][f] = u;
             coupledFaces_[d].push_back(slot);
         }
     }

@@ -399,7 +399,7 @@ bool Foam::csmpmStepper::advance
     {
         if (mesh_.active(d))
         {
-            op_.setPassable(d, &openEff_[d], nullptr, &phiCell_);
+            op_.setPassable(d, &openEff_[d]);
         }
     }
     const bool advected = rungeKutta(U, dt, true, Ustar_, rep);

@@ -155,29 +155,6 @@ void Foam::eulerOperator::wallFace(label d, label f)
 }
 
 
-void Foam::eulerOperator::blendFace
-(
-    const gasState& U,
-    label d,
-    const cartesianMesh::segment& s,
-    label m
-)
-{
-    const label f = s.faceOffset + m;
-    const double a = (*open_[d])[f];
-    if (!(a < 1)) return;
-    for (int c = 0; c < 5; ++c) F_[d][c][f] *= a;
-    if (!wallU_[d]) return;
-    const double us = (*wallU_[d])[f];
-    if (us == 0) return;
-    const label st = mesh_.stride(d);
-    const label l = s.start + (m - 1)*st, r = s.start + m*st;
-    const label g = (phi_ && (*phi_)[r] < (*phi_)[l]) ? r : l;
-    const double b = (1 - a)*us;
-    for (int c = 0; c < 5; ++c) F_[d][c][f] += b*U.q[c][g];
-}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::eulerOperator::computeFluxes(const gasState& U, bool advective)
@@ -223,7 +200,10 @@ void Foam::eulerOperator::computeFluxes(const gasState& U, bool advective)
         {
             for (const auto& s : mesh_.segments(d))
             {
-                for (label m = 1; m < s.length; ++m) blendFace(U, d, s, m);
+                for (label m = 1; m < s.length; ++m)
+                {
+                    blendFace(d, s.faceOffset + m);
+                }
             }
         }
     }
@@ -248,8 +228,8 @@ void Foam::eulerOperator::firstOrderFaces
         firstOrderFace(line, s, m + 1);
         if (open_[d])
         {
-            if (m > 0) blendFace(U, d, s, m);
-            if (m + 1 < s.length) blendFace(U, d, s, m + 1);
+            if (m > 0) blendFace(d, f0);
+            if (m + 1 < s.length) blendFace(d, f0 + 1);
         }
         if (m == 0 && bcs_[s.lowPatch].kindOf() == gasBoundary::kind::wall)
         {
