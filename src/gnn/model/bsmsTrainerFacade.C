@@ -99,12 +99,13 @@ double bsmsTrainerFacade::trainStep
 }
 
 
-double bsmsTrainerFacade::trainShare
+double bsmsTrainerFacade::trainShards
 (
     const std::vector<double>& x,
     const std::vector<double>& y,
     const std::int64_t first,
-    const std::int64_t n,
+    const std::int64_t nMine,
+    const std::int64_t nShards,
     const std::int64_t nTotal,
     rankSum& sum
 )
@@ -116,17 +117,12 @@ double bsmsTrainerFacade::trainShare
         .reshape({-1, nNodes, t.netConfig().nIn});
     const auto Y = torch::tensor(y, torch::kFloat64)
         .reshape({-1, nNodes, t.netConfig().nOut});
-    return t.trainShare
+    return t.trainShards
     (
-        X, Y, first, n, nTotal,
-        [&sum](std::vector<float>& v) { sum(v); }
+        X, Y, first, nMine, nShards, nTotal,
+        [&sum](std::vector<float>& v) { sum(v); },
+        [&sum](std::vector<double>& v) { sum(v); }
     );
-}
-
-
-bool bsmsTrainerFacade::wholeBatchNeeded() const
-{
-    return impl_->trainer.wholeBatchNeeded();
 }
 
 

@@ -189,108 +189,202 @@ double graphNetTrainer::loss(const torch::Tensor& xIn, const torch::Tensor& yIn)
 }
 
 
-bool graphNetTrainer::wholeBatchNeeded() const
-{
-    return step_ < config_.normAccumulations || !config_.noiseStd.empty();
-}
-
-
-double graphNetTrainer::trainShare
+double graphNetTrainer::trainShards
 (
     const torch::Tensor& xIn,
     const torch::Tensor& yIn,
     const std::int64_t first,
-    const std::int64_t n,
+    const std::int64_t nMine,
+    const std::int64_t nShards,
     const std::int64_t nTotal,
-    const std::function<void(std::vector<float>&)>& sumOverRanks
+    const std::function<void(std::vector<float>&)>& sumOverRanks,
+    const std::function<void(std::vector<double>&)>& sumOverRanksD
 )
 {
     torch::Tensor x = checked(xIn, netConfig_.nIn);
     torch::Tensor y = checked(yIn, netConfig_.nOut);
     if (x.dim() == 2) x = x.unsqueeze(0);
     if (y.dim() == 2) y = y.unsqueeze(0);
-    const std::int64_t nx = x.size(0);
-    const bool whole = nx == nTotal && y.size(0) == nTotal;
-    const bool share = nx == n && y.size(0) == n;
+    // Shard k: samples [off(k), off(k + 1)) of the batch
+    auto off = [nTotal, nShards](const std::int64_t k)
+    {
+        return k*nTotal/nShards;
+    };
     if
     (
-        n < 1 || first < 0 || first + n > nTotal
-     || !(whole || share) || (!whole && wholeBatchNeeded())
+        nShards < 1 || nShards > nTotal || nMine < 1 || first < 0
+     || first + nMine > nShards
+     || x.size(0) != off(first + nMine) - off(first)
+     || y.size(0) != x.size(0)
     )
     {
         throw std::runtime_error
         (
-            "graphNetTrainer: the share [" + std::to_string(first) + ", "
-          + std::to_string(first + n) + ") of a batch of "
-          + std::to_string(nTotal) + " samples, given "
-          + std::to_string(nx) + " input and "
+            "graphNetTrainer: shards [" + std::to_string(first) + ", "
+          + std::to_string(first + nMine) + ") of " + std::to_string(nShards)
+          + " of a batch of " + std::to_string(nTotal) + " samples, given "
+          + std::to_string(x.size(0)) + " input and "
           + std::to_string(y.size(0)) + " target samples"
-          + (wholeBatchNeeded() ? " (the whole batch is needed)" : "")
         );
     }
-
-    x = prepare(x, y);
-    if (whole)
+    const std::int64_t nIn = netConfig_.nIn, nOut = netConfig_.nOut;
+    auto mine = [&](const torch::Tensor& t, const std::int64_t k)
     {
-        x = x.narrow(0, first, n);
-        y = y.narrow(0, first, n);
-    }
+        return t.narrow(0, off(k) - off(first), off(k + 1) - off(k));
+    };
 
-    net_->train();
-    optimizer_->zero_grad();
-    const torch::Tensor pred = net_->forward(inNorm_->forward(x));
-    const torch::Tensor l = torch::mse_loss(pred, outNorm_->forward(y));
-    l.backward();
-
-    // The share's gradients and loss, weighted by its share of the batch,
-    // in one buffer; summed over the ranks; back into the gradients
-    const float w = float(double(n)/double(nTotal));
-    std::vector<torch::Tensor> params = net_->parameters();
-    std::int64_t nValues = 1;
-    for (const torch::Tensor& p : params)
-    {
-        if (p.grad().defined()) nValues += p.numel();
-    }
-    std::vector<float>& buf = shareBuf_;
-    buf.resize(nValues);
+    // Normaliser statistics of every shard, then added in shard order
+    if (step_ < config_.normAccumulations && inNorm_->accumulating())
     {
         torch::NoGradGuard noGrad;
-        std::int64_t o = 0;
+        const std::int64_t stride = 2*(nIn + nOut);
+        std::vector<double>& st = statBuf_;
+        st.assign(nShards*stride, 0.0);
+        for (std::int64_t k = first; k < first + nMine; ++k)
+        {
+            double* o = st.data() + k*stride;
+            auto put = [&o](const torch::Tensor& d, const std::int64_t nc)
+            {
+                const torch::Tensor s = d.sum(0).contiguous();
+                const torch::Tensor q = (d*d).sum(0).contiguous();
+                std::copy(s.data_ptr<double>(), s.data_ptr<double>() + nc, o);
+                std::copy(q.data_ptr<double>(), q.data_ptr<double>() + nc, o + nc);
+                o += 2*nc;
+            };
+            put(mine(x, k).detach().reshape({-1, nIn}).to(torch::kFloat64), nIn);
+            put(mine(y, k).detach().reshape({-1, nOut}).to(torch::kFloat64), nOut);
+        }
+        sumOverRanksD(st);
+        const std::int64_t nNodes = x.size(1);
+        std::vector<std::int64_t> counts(nShards);
+        std::vector<double> sx(nShards*nIn), qx(nShards*nIn);
+        std::vector<double> sy(nShards*nOut), qy(nShards*nOut);
+        for (std::int64_t k = 0; k < nShards; ++k)
+        {
+            counts[k] = (off(k + 1) - off(k))*nNodes;
+            const double* o = st.data() + k*stride;
+            std::copy(o, o + nIn, sx.begin() + k*nIn);
+            std::copy(o + nIn, o + 2*nIn, qx.begin() + k*nIn);
+            o += 2*nIn;
+            std::copy(o, o + nOut, sy.begin() + k*nOut);
+            std::copy(o + nOut, o + 2*nOut, qy.begin() + k*nOut);
+        }
+        inNorm_->accumulateParts(counts, sx.data(), qx.data());
+        outNorm_->accumulateParts(counts, sy.data(), qy.data());
+    }
+
+    for (auto& group : optimizer_->param_groups())
+    {
+        static_cast<torch::optim::AdamOptions&>(group.options())
+            .lr(learningRate());
+    }
+
+    // Forward and backward of each of this rank's shards; the gradients
+    // and loss of shard k in slot k of the buffer (zero elsewhere)
+    net_->train();
+    std::vector<torch::Tensor> params = net_->parameters();
+    std::int64_t nValues = 1;
+    for (const torch::Tensor& p : params) nValues += p.numel();
+    std::vector<float>& buf = shardBuf_;
+    buf.assign(nShards*nValues, 0.0f);
+    for (std::int64_t k = first; k < first + nMine; ++k)
+    {
+        torch::Tensor xs = mine(x, k);
+        const torch::Tensor ys = mine(y, k);
+        // Noise (4.4.2.5), reproducible from (seed, step, shard)
+        if (!config_.noiseStd.empty())
+        {
+            std::vector<float> sd(nIn);
+            for (int c = 0; c < nIn; ++c)
+            {
+                sd[c] = float
+                (
+                    config_.noiseStd.size() == 1
+                  ? config_.noiseStd[0] : config_.noiseStd[c]
+                );
+            }
+            auto gen = at::detail::createCPUGenerator
+            (
+                config_.seed*0x9E3779B97F4A7C15ULL + std::uint64_t(step_) + 1
+              + std::uint64_t(k)*0xD1B54A32D192ED03ULL
+            );
+            xs = xs + torch::randn(xs.sizes(), gen, xs.options())
+               *torch::tensor(sd, xs.options());
+        }
+        optimizer_->zero_grad();
+        const torch::Tensor pred = net_->forward(inNorm_->forward(xs));
+        const torch::Tensor l = torch::mse_loss(pred, outNorm_->forward(ys));
+        l.backward();
+
+        torch::NoGradGuard noGrad;
+        float* o = buf.data() + k*nValues;
         for (const torch::Tensor& p : params)
         {
-            if (!p.grad().defined()) continue;
-            const torch::Tensor g =
-                (p.grad()*w).to(torch::kFloat32).contiguous();
-            std::copy
-            (
-                g.data_ptr<float>(), g.data_ptr<float>() + g.numel(),
-                buf.begin() + o
-            );
-            o += g.numel();
+            if (p.grad().defined())
+            {
+                const torch::Tensor g =
+                    p.grad().to(torch::kFloat32).contiguous();
+                std::copy
+                (
+                    g.data_ptr<float>(), g.data_ptr<float>() + g.numel(), o
+                );
+            }
+            o += p.numel();
         }
-        buf[o] = l.item<float>()*w;
+        *o = l.item<float>();
+    }
 
-        sumOverRanks(buf);
+    sumOverRanks(buf);
 
-        o = 0;
+    // The batch's gradient and loss: the shards in order, weighted by their
+    // share of the batch (double, rounded to float once)
+    double loss = 0;
+    {
+        torch::NoGradGuard noGrad;
+        std::vector<double> w(nShards);
+        for (std::int64_t k = 0; k < nShards; ++k)
+        {
+            w[k] = double(off(k + 1) - off(k))/double(nTotal);
+        }
+        std::int64_t o = 0;
+        std::vector<float>& g = gradBuf_;
         for (torch::Tensor& p : params)
         {
-            if (!p.grad().defined()) continue;
-            torch::Tensor g = p.mutable_grad();
-            g.copy_
+            const std::int64_t n = p.numel();
+            if (!p.grad().defined())
+            {
+                // Not in the graph (the same on every rank and shard)
+                o += n;
+                continue;
+            }
+            g.resize(n);
+            for (std::int64_t i = 0; i < n; ++i)
+            {
+                double s = 0;
+                for (std::int64_t k = 0; k < nShards; ++k)
+                {
+                    s += w[k]*double(buf[k*nValues + o + i]);
+                }
+                g[i] = float(s);
+            }
+            p.mutable_grad().copy_
             (
                 torch::from_blob
                 (
-                    buf.data() + o, g.sizes(),
+                    g.data(), p.sizes(),
                     torch::TensorOptions().dtype(torch::kFloat32)
                 )
             );
-            o += g.numel();
+            o += n;
+        }
+        for (std::int64_t k = 0; k < nShards; ++k)
+        {
+            loss += w[k]*double(buf[k*nValues + o]);
         }
     }
     optimizer_->step();
     ++step_;
-    return buf.back();
+    return double(float(loss));
 }
 
 

@@ -50,6 +50,32 @@ void normaliserImpl::accumulate(const torch::Tensor& x)
 }
 
 
+void normaliserImpl::accumulateParts
+(
+    const std::vector<std::int64_t>& counts,
+    const double* sums,
+    const double* sumSqs
+)
+{
+    if (calls_.item<std::int64_t>() >= maxAccumulations_) return;
+    torch::NoGradGuard noGrad;
+    const auto f64 = torch::TensorOptions().dtype(torch::kFloat64);
+    calls_ += 1;
+    for (std::size_t k = 0; k < counts.size(); ++k)
+    {
+        count_ += counts[k];
+        sum_ += torch::from_blob
+        (
+            const_cast<double*>(sums + k*nComp_), {nComp_}, f64
+        );
+        sumSq_ += torch::from_blob
+        (
+            const_cast<double*>(sumSqs + k*nComp_), {nComp_}, f64
+        );
+    }
+}
+
+
 torch::Tensor normaliserImpl::mean() const
 {
     const double n = std::max<double>(count_.item<std::int64_t>(), 1);
