@@ -396,8 +396,8 @@ bool Foam::csmpmStepper::pressureStep
             // The gas's own work on the passable shares (a flux), and the
             // solid's on the gas of this cell: the cell's pressure times
             // the solid volume the faces' reflective shares bring in (what
-            // the solid's nodes lose by (3.36), so gas + solid energy is
-            // kept; none in a cell the solid covers and crosses rigidly)
+            // the pressure's work on the solid's nodes in (3.36) at their
+            // new velocities; none in a cell the solid crosses rigidly)
             const double F0 = pF[f]*a0*uF[f];
             const double F1 = pF[f + 1]*a1*uF[f + 1];
             const double Ws =
