@@ -395,9 +395,10 @@ bool Foam::csmpmStepper::pressureStep
             const double a0 = open[f], a1 = open[f + 1];
             // The gas's own work on the passable shares (a flux), and the
             // solid's on the gas of this cell: the cell's pressure times
-            // the solid volume the faces' reflective shares bring in (what
-            // the pressure's work on the solid's nodes in (3.36) at their
-            // new velocities; none in a cell the solid crosses rigidly)
+            // the solid volume the faces' reflective shares bring in (the
+            // pressure's work on the solid's nodes in (3.36) at their new
+            // velocities, turned round; none where the solid crosses a
+            // cell rigidly)
             const double F0 = pF[f]*a0*uF[f];
             const double F1 = pF[f + 1]*a1*uF[f + 1];
             const double Ws =
