@@ -380,9 +380,7 @@ bool Foam::csmpmStepper::pressureStep
             {
                 u += w[e]*vs[nodes[e]][d];
             }
-            // The solid's work reaches the gas on the face's gas side
-            // only: none between two cells the solid covers
-            usF[fc.f] = u*(1 - min(phiCell_[fc.l], phiCell_[fc.r]));
+            usF[fc.f] = u;
         }
 
         const auto& lowFace = mesh_.lowFaceOf(d);
@@ -395,9 +393,17 @@ bool Foam::csmpmStepper::pressureStep
             // solid); equal to -dt (p_{f+1} - p_f)/dx where nothing blocks
             m[i] += dt*(J[f]*(1 - shareL_[f]) + J[f + 1]*shareL_[f + 1])/dx;
             const double a0 = open[f], a1 = open[f + 1];
-            const double F0 = pF[f]*(a0*uF[f] + (1 - a0)*usF[f]);
-            const double F1 = pF[f + 1]*(a1*uF[f + 1] + (1 - a1)*usF[f + 1]);
-            E[i] -= dt*(F1 - F0)/dx;
+            // The gas's own work on the passable shares (a flux), and the
+            // solid's on the gas of this cell: the cell's pressure times
+            // the solid volume the faces' reflective shares bring in (the
+            // pressure's work on the solid's nodes in (3.36) at their new
+            // velocities, turned round; none where the solid crosses a
+            // cell rigidly)
+            const double F0 = pF[f]*a0*uF[f];
+            const double F1 = pF[f + 1]*a1*uF[f + 1];
+            const double Ws =
+                p_[unknownOf_[i]]*((1 - a0)*usF[f] - (1 - a1)*usF[f + 1]);
+            E[i] -= dt*(F1 - F0 - Ws)/dx;
             if (gravity_)
             {
                 // The work of gravity on the face's passable share, split

@@ -147,6 +147,7 @@ Foam::csmpmStepper::csmpmStepper
             << " constant/mpmProperties for a gas-only run"
             << exit(FatalError);
     }
+    checkInside();
     solver_.initialise(P_);
     readGhost(cDict, gasDict);
     {
@@ -336,6 +337,56 @@ void Foam::csmpmStepper::checkInlets(const dictionary& shockMpmDict) const
                 << " away from inlets (system/mpmSetParticlesDict)"
                 << exit(FatalIOError);
         }
+    }
+}
+
+
+void Foam::csmpmStepper::checkInside() const
+{
+    // Each particle within the lattice box of its cell (to 1e-6 of a
+    // spacing): the lattice cell the coupling deposits it on is the cell
+    // the mesh files it under
+    const std::vector<label>& latticeOf = mesh_.latticeOf();
+    const scalar tol = 1e-6;
+    forAll(P_.x, p)
+    {
+        const label c = P_.cell[p];
+        label ijk[3] = {-1, -1, -1};
+        bool inside = c >= 0 && c < label(latticeOf.size());
+        if (inside)
+        {
+            mesh_.ijk(latticeOf[c], ijk[0], ijk[1], ijk[2]);
+        }
+        for (label d = 0; inside && d < 3; ++d)
+        {
+            const scalar s = (P_.x[p][d] - mesh_.origin()[d])/mesh_.dx(d);
+            inside = s >= ijk[d] - tol && s <= ijk[d] + 1 + tol;
+        }
+        if (inside) continue;
+
+        const fileName cloudFile
+        (
+            fvMesh_.time().timePath()/cloud::prefix/cloudName_/"coordinates"
+        );
+        vector lo(Zero), hi(Zero);
+        for (label d = 0; d < 3; ++d)
+        {
+            lo[d] = mesh_.origin()[d];
+            hi[d] = lo[d] + mesh_.n(d)*mesh_.dx(d);
+        }
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__, cloudFile, -1
+        )   << "Particle " << p << " (id " << P_.id[p] << ") of the cloud "
+            << cloudFile << " lies at " << P_.x[p] << ", outside its cell "
+            << c << " of the gas lattice (the lattice spans " << lo
+            << " to " << hi << ")." << nl
+            << "    The particles were seeded by the entry 'regions' of "
+            << fvMesh_.time().path()/fvMesh_.time().system()
+            /"mpmSetParticlesDict" << " (or the"
+            << " cloud was written for another mesh)." << nl
+            << "    allowed: particles inside the cells of this blockMesh;"
+            << " seed them again with mpmSetParticles" << exit(FatalIOError);
     }
 }
 

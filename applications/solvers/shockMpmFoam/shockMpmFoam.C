@@ -108,6 +108,9 @@ int main(int argc, char *argv[])
             // volume only (a restart's fields hold it so already)
             gas.scaleState(coupled->openFractions());
         }
+        // rhoU and rhoE written too, read back at a restart: it continues
+        // bit for bit
+        gas.exactRestart(!coupled->freshStart());
     }
 
     // The controlDict's deltaT only matters to Time::run(), which would stop

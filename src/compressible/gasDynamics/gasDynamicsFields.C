@@ -261,6 +261,67 @@ void Foam::gasDynamics::toFields()
 }
 
 
+bool Foam::gasDynamics::exactRestart(bool read)
+{
+    rhoU_.writeOpt() = IOobject::AUTO_WRITE;
+    rhoE_.writeOpt() = IOobject::AUTO_WRITE;
+    if (!read)
+    {
+        return false;
+    }
+    IOobject uIO(readIO(mesh_, "rhoU"));
+    IOobject eIO(readIO(mesh_, "rhoE"));
+    if
+    (
+        !uIO.typeHeaderOk<volVectorField>(true)
+     || !eIO.typeHeaderOk<volScalarField>(true)
+    )
+    {
+        return false;
+    }
+    const volVectorField rhoU(uIO, mesh_);
+    const volScalarField rhoE(eIO, mesh_);
+
+    // Only a state that is the one p, U and rho describe (not a stale
+    // rhoE beside a p edited since)
+    const auto& lat = view_.latticeOf();
+    scalar pMax = 0, uMax = 0, dp = 0, du = 0;
+    forAll(rho_, celli)
+    {
+        const scalar r = rho_[celli];
+        const vector& m = rhoU[celli];
+        const scalar p = gas_.pressure(r, m.x(), m.y(), m.z(), rhoE[celli]);
+        pMax = max(pMax, mag(p_[celli]));
+        uMax = max(uMax, mag(Uf_[celli]));
+        dp = max(dp, mag(p - p_[celli]));
+        du = max(du, mag(m/r - Uf_[celli]));
+    }
+    reduce(pMax, maxOp<scalar>());
+    reduce(uMax, maxOp<scalar>());
+    reduce(dp, maxOp<scalar>());
+    reduce(du, maxOp<scalar>());
+    if (dp > 1e-10*pMax || du > 1e-10*max(uMax, VSMALL))
+    {
+        WarningInFunction
+            << rhoU.objectPath() << " and " << rhoE.objectPath()
+            << " differ from p, U and rho by " << dp << " Pa, " << du
+            << " m/s: the state is taken from p, U and rho" << endl;
+        return false;
+    }
+    forAll(rho_, celli)
+    {
+        const label i = lat[celli];
+        U_.q[1][i] = rhoU[celli].x();
+        U_.q[2][i] = rhoU[celli].y();
+        U_.q[3][i] = rhoU[celli].z();
+        U_.q[4][i] = rhoE[celli];
+    }
+    toFields();
+    Info<< "Gas state from rho, rhoU and rhoE (exact restart)" << nl;
+    return true;
+}
+
+
 void Foam::gasDynamics::updateDerived()
 {
     phi_ = fvc::interpolate(rhoU_) & mesh_.Sf();

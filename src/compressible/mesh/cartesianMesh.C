@@ -24,15 +24,28 @@ namespace
 )
 {
     using namespace Foam;
-    FatalErrorInFunction
-        << "The mesh of " << mesh.time().path()
-        << " is not a uniform Cartesian (blockMesh-like) mesh." << nl
+    // The file: the mesh's points (constant/polyMesh/points), made by
+    // system/blockMeshDict
+    const fileName pointsFile
+    (
+        mesh.time().path()/mesh.pointsInstance()/polyMesh::meshSubDir
+       /"points"
+    );
+    FatalIOError
+    (
+        FUNCTION_NAME, __FILE__, __LINE__, pointsFile, -1
+    )   << "The mesh of " << mesh.time().path()
+        << " is not a uniform Cartesian (blockMesh-like) mesh: "
+        << pointsFile << nl
         << "    first offending cell: " << celli
         << " at " << mesh.cellCentres()[celli] << nl
         << "    " << why.c_str() << nl
-        << "    The WENO gas solver needs axis-aligned hexahedra of one size"
-        << " on a regular lattice (blockMesh blocks with equal spacing)."
-        << exit(FatalError);
+        << "    The WENO gas solver (and the solids coupled to it) needs"
+        << " axis-aligned hexahedra of one size on a regular lattice." << nl
+        << "    allowed: blockMesh blocks with equal spacing (entries"
+        << " 'blocks' of system/blockMeshDict: simpleGrading (1 1 1), the"
+        << " same cell size in every block)"
+        << exit(FatalIOError);
     std::abort();
 }
 

@@ -130,6 +130,9 @@ void Foam::mpmCloudIO::write
     writeField(mesh, cloudName, "epsilonP", P.epsilonP);
     writeField(mesh, cloudName, "Jp", P.Jp);
     writeField(mesh, cloudName, "id", P.id);
+    // The positions as computed: the cloud's barycentric coordinates give
+    // them back to round-off only, these bit for bit (exact restarts)
+    writeField(mesh, cloudName, "x", P.x);
 }
 
 
@@ -210,6 +213,25 @@ bool Foam::mpmCloudIO::read
         P.id = identity(n);
     }
     if (idsRead) *idsRead = ids;
+
+    // The exact positions where written beside the cloud's own (those of
+    // the barycentric coordinates), if they are the same points: a cloud
+    // edited or moved since keeps its barycentric positions
+    IOobject xIO(fieldIO(mesh, cloudName, "x", IOobject::MUST_READ));
+    if (xIO.typeHeaderOk<IOField<vector>>(false))
+    {
+        IOField<vector> xf(xIO);
+        bool same = xf.size() == n;
+        const scalar tol = 1e-9*mag(mesh.bounds().span());
+        for (label p = 0; same && p < n; ++p)
+        {
+            same = mag(xf[p] - P.x[p]) <= tol;
+        }
+        if (same)
+        {
+            forAll(xf, p) P.x[p] = xf[p];
+        }
+    }
     return true;
 }
 

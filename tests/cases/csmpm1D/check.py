@@ -11,6 +11,13 @@
       cells before the wall), as 'xerr <cells> perr <relative>'
   check.py slab CASE TIME DP RHOS LEN   mean slab velocity (particles)
       against DP/(RHOS LEN) TIME: prints 'aerr <relative>'
+  check.py rarefaction CASE TIME U XB   a piston (the slab's back face at
+      XB at t = 0) moving away at -U from gas at rest (rho 1, p 1) on its
+      right: the exact simple wave behind it, p = (1 - (gamma - 1)/2
+      U/c)^(2 gamma/(gamma - 1)), u = -U between the piston and the wave's
+      tail at XB + (c - (gamma + 1)/2 U) t; the numerical plateau (mean
+      from 5 cells behind the piston to 5 cells before the tail): prints
+      'perr <relative> uerr <relative>'
 """
 import math, re, sys
 
@@ -63,3 +70,19 @@ elif mode == 'slab':
     ex = dp/(rhoS*Ls)*float(t)
     print(f'slab velocity {v:.6e}, exact {ex:.6e}')
     print(f'aerr {abs(v - ex)/abs(ex):.3e}')
+elif mode == 'rarefaction':
+    case, t, U, xb = sys.argv[2], sys.argv[3], float(sys.argv[4]), float(sys.argv[5])
+    c = math.sqrt(g)
+    ps = (1 - (g - 1)/2*U/c)**(2*g/(g - 1))
+    P = [float(v) for v in internal(f'{case}/{t}/p')]
+    u = [float(v) for v in re.findall(r'\(\s*([-\d.e+]+)\s', ' '.join(internal(f'{case}/{t}/U')))]
+    n = len(P)
+    L = float(open(f'{case}/caseInfo').read().split()[0])
+    dx = L/n
+    tt = float(t)
+    i0 = int((xb - U*tt)/dx) + 5
+    i1 = int((xb + (c - (g + 1)/2*U)*tt)/dx) - 5
+    plat = sum(P[i0:i1])/max(1, i1 - i0)
+    uplat = sum(u[i0:i1])/max(1, i1 - i0)
+    print(f'exact p {ps:.6f} u {-U}; numerical plateau p {plat:.6f} u {uplat:.6f} (cells {i0}-{i1})')
+    print(f'perr {abs(plat - ps)/ps:.3e} uerr {abs(uplat + U)/U:.3e}')

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Write the quiescent-ring case (dissertation Fig. 3.3) into directory D:
 python3 makeRing.py D [n=128] [tEnd=0.7] [ghostInit=ambient] [kernel=bspline2]
+    [solidUpdate=eliminated] [E=1e3] [rhoS=10]
 
 The unit square, walls all round, gas rho 1, p 1 at rest (sound speed
 1.183); an elastic ring (neoHookean, rho 10, E 1e3, nu 0.3) of radii 0.15
@@ -12,7 +13,7 @@ unstressed: J^g = 1, the ring starts with no pressure against the gas's 1.
 """
 import os, sys
 a = dict(n=128, tEnd=0.7, write=0.35, ghostInit='ambient', kernel='bspline2',
-         solidUpdate='eliminated')
+         solidUpdate='eliminated', E=1e3, rhoS=10.0)
 d = sys.argv[1]
 for kv in sys.argv[2:]:
     k, v = kv.split('=')
@@ -63,7 +64,7 @@ w('constant/thermophysicalProperties', 'dictionary',
   'thermophysicalProperties', 'gamma 1.4; R 1;\n')
 w('constant/mpmProperties', 'dictionary', 'mpmProperties', f'''
 kernel {a["kernel"]}; transfer APIC; CFL 0.5;
-materials {{ ring {{ type neoHookean; rho 10; E 1e3; nu 0.3; }} }}
+materials {{ ring {{ type neoHookean; rho {a["rhoS"]}; E {a["E"]}; nu 0.3; }} }}
 ''')
 w('system/mpmSetParticlesDict', 'dictionary', 'mpmSetParticlesDict', '''
 regions ( ring { type cellZone; zone ring; material ring; perCell 2; } );
