@@ -21,6 +21,8 @@ void Foam::csmpmStepper::couplingFaces()
     // Only the faces and cells the deposit touched are visited; those of
     // the previous step are reset first
     const scalar tiny = nodeMassMin_;
+    // (parallel: every copy's mass is the ranks' common one)
+    const List<scalar>& mass = par_.valid() ? massAll_ : grid.mass;
     for (label d = 0; d < 3; ++d)
     {
         if (!mesh_.active(d)) continue;
@@ -52,12 +54,12 @@ void Foam::csmpmStepper::couplingFaces()
             double ws = 0;
             for (label e = fc.node0; e < fc.node0 + fc.nNodes; ++e)
             {
-                if (grid.mass[nodes[e]] > tiny) ws += w[e];
+                if (mass[nodes[e]] > tiny) ws += w[e];
             }
             if (ws <= 0) continue;
             for (label e = fc.node0; e < fc.node0 + fc.nNodes; ++e)
             {
-                wNorm_[d][e] = grid.mass[nodes[e]] > tiny ? w[e]/ws : 0;
+                wNorm_[d][e] = mass[nodes[e]] > tiny ? w[e]/ws : 0;
             }
             Reff_[d][f] = R[f];
             openEff_[d][f] = 1 - R[f];
@@ -89,6 +91,17 @@ bool Foam::csmpmStepper::pressureStep
     const PtrList<gasBoundary>& bcs = op_.boundaries();
     mpmGrid& grid = solver_.grid();
     List<vector>& vs = grid.newVelocity;
+    const bool par = par_.valid();
+    const List<scalar>& mass = par ? massAll_ : grid.mass;
+
+    // Parallel: the neighbour ranks' advected cells at processor faces,
+    // and their solid fractions
+    std::vector<double> gS;
+    if (par) mesh_.exchangeGhosts(Ustar_.q, 1, gS);
+    auto openRemote = [&](label slot)
+    {
+        return max(1 - lattice_.phiRemote(slot), gasVolumeMin_);
+    };
 
     auto pressure = [&](const gasState& S, label i)
     {
@@ -167,11 +180,63 @@ bool Foam::csmpmStepper::pressureStep
                     s.faceOffset + m, s.start + (m - 1)*st, s.start + m*st
                 );
             }
+            // A processor face: the neighbour rank's cell is one side
+            auto coupleGhost = [&](label f, label slot, label i, bool low)
+            {
+                const double* g = gS.data() + 5*slot;
+                const double dG = g[0]/openRemote(slot);
+                const double dI =
+                    Ustar_.q[0][i]/max(1 - phiCell_[i], gasVolumeMin_);
+                const double rhoF = low ? 0.5*(dG + dI) : 0.5*(dI + dG);
+                const double uG = g[1 + d]/g[0];
+                const double uI = Ustar_.q[1 + d][i]/Ustar_.q[0][i];
+                const double uS = (low ? 0.5*(uG + uI) : 0.5*(uI + uG))
+                  + dt*g_[d];
+                rhoF_[d][f] = rhoF;
+                uStarF_[d][f] = uS;
+                const double a = open[f];
+                if (a <= 0) return;
+                const label k = unknownOf_[i];
+                gsys.coupleRemote(k, slot, a*A/(rhoF*dx));
+                if (low) gsys.source[k] += a*A*uS/dt;
+                else gsys.source[k] -= a*A*uS/dt;
+            };
             const label first = s.start;
             const label last = s.start + (s.length - 1)*st;
             if (periodic)
             {
                 coupleCells(s.faceOffset, last, first);
+            }
+            else if (s.lowGhost >= 0 || s.highGhost >= 0)
+            {
+                double q[5];
+                if (s.lowGhost >= 0)
+                {
+                    coupleGhost(s.faceOffset, s.lowGhost, first, true);
+                }
+                else
+                {
+                    for (int c = 0; c < 5; ++c) q[c] = Ustar_.q[c][first];
+                    const double uLo = bcs[s.lowPatch].faceVelocity(q, d);
+                    uF_[d][s.faceOffset] = uLo;
+                    usF_[d][s.faceOffset] = uLo;
+                    gsys.source[unknownOf_[first]] += A*uLo/dt;
+                }
+                if (s.highGhost >= 0)
+                {
+                    coupleGhost
+                    (
+                        s.faceOffset + s.length, s.highGhost, last, false
+                    );
+                }
+                else
+                {
+                    for (int c = 0; c < 5; ++c) q[c] = Ustar_.q[c][last];
+                    const double uHi = bcs[s.highPatch].faceVelocity(q, d);
+                    uF_[d][s.faceOffset + s.length] = uHi;
+                    usF_[d][s.faceOffset + s.length] = uHi;
+                    gsys.source[unknownOf_[last]] -= A*uHi/dt;
+                }
             }
             else
             {
@@ -205,11 +270,13 @@ bool Foam::csmpmStepper::pressureStep
             const solidLattice::face& fc = lattice_.faces(d)[slot];
             const double Rf = R[fc.f];
             if (Rf <= 0) continue;
-            const label kl = unknownOf_[fc.l], kr = unknownOf_[fc.r];
+            // (a processor face: the neighbour rank adds its cell's column)
+            const label kl = fc.l >= 0 ? unknownOf_[fc.l] : -1;
+            const label kr = fc.r >= 0 ? unknownOf_[fc.r] : -1;
             for (label e = fc.node0; e < fc.node0 + fc.nNodes; ++e)
             {
                 const label i = nodes[e];
-                if (!(grid.mass[i] > tiny)) continue;
+                if (!(mass[i] > tiny)) continue;
                 sys_.addFaceNode(i, d, kl, kr, A*Rf*w[e]);
             }
         }
@@ -220,11 +287,26 @@ bool Foam::csmpmStepper::pressureStep
         for (label k = 0; k < sys_.nRows(); ++k)
         {
             const label i = sys_.rowNode(k);
-            massScaled_[i] = sc*grid.mass[i];
+            massScaled_[i] = sc*mass[i];
         }
     }
     sys_.endSolid(massScaled_);
-    sys_.addSolidSource(vs, dt);
+    if (par)
+    {
+        // v* at every copy of a node (a copy no particle of its rank
+        // touches holds zero; the others hold the same sum)
+        vsAll_ = vs;
+        par_->combineShared
+        (
+            vsAll_,
+            [](const vector& a, const vector& b)
+            {
+                return magSqr(a) > 0 ? a : b;
+            },
+            nullptr
+        );
+    }
+    sys_.addSolidSource(par ? vsAll_ : vs, dt);
 
     rep.cgIterations = sys_.solve(p_, tol_, maxIter_, rep.cgResidual);
     if (!std::isfinite(rep.cgResidual) || rep.cgResidual > 1e-3)
@@ -240,10 +322,32 @@ bool Foam::csmpmStepper::pressureStep
     {
         // (3.36): v = v* - dt M^-1 T p on the solid's nodes
         sys_.applyT(p_, Tp_);
-        for (label k = 0; k < sys_.nRows(); ++k)
+        if (!par)
         {
-            const label i = sys_.rowNode(k);
-            vs[i][sys_.rowDir(k)] -= dt*Tp_[k]/massScaled_[i];
+            for (label k = 0; k < sys_.nRows(); ++k)
+            {
+                const label i = sys_.rowNode(k);
+                vs[i][sys_.rowDir(k)] -= dt*Tp_[k]/massScaled_[i];
+            }
+        }
+        else
+        {
+            // Every copy of a node takes the update, also a copy whose
+            // rank holds no face of it (its particles still read it):
+            // T p summed over the ranks is zero off the rows
+            const List<vector>& Tp = sys_.rowsSummed();
+            const scalar sc = lattice_.scale();
+            forAll(vsAll_, i)
+            {
+                if (!(mass[i] > tiny)) continue;
+                for (label d = 0; d < 3; ++d)
+                {
+                    if (Tp[i][d] == 0) continue;
+                    const double dv = dt*Tp[i][d]/(sc*mass[i]);
+                    vsAll_[i][d] -= dv;
+                    if (grid.isActive[i]) vs[i][d] -= dv;
+                }
+            }
         }
     }
     else
@@ -313,6 +417,18 @@ bool Foam::csmpmStepper::pressureStep
         }
     }
 
+    // Parallel: the neighbour ranks' pressures at processor faces
+    std::vector<double> pG;
+    if (par)
+    {
+        std::vector<double> mine(sys_.gas.slotUnknown.size());
+        for (size_t j = 0; j < mine.size(); ++j)
+        {
+            mine[j] = p_[sys_.gas.slotUnknown[j]];
+        }
+        mesh_.exchangeSlots(mine, pG);
+    }
+
     // (3.21) gas face velocities; the solid's velocity at each face
     for (int c = 0; c < 5; ++c) out.q[c] = Ustar_.q[c];
     for (label d = 0; d < 3; ++d)
@@ -362,10 +478,47 @@ bool Foam::csmpmStepper::pressureStep
             }
             else
             {
-                pF[s.faceOffset] = p_[unknownOf_[first]];
-                pF[s.faceOffset + s.length] = p_[unknownOf_[last]];
-                J[s.faceOffset] = 0;
-                J[s.faceOffset + s.length] = 0;
+                // (a processor face's J holds u* until ghostFace below)
+                if (s.lowGhost < 0)
+                {
+                    pF[s.faceOffset] = p_[unknownOf_[first]];
+                    J[s.faceOffset] = 0;
+                }
+                if (s.highGhost < 0)
+                {
+                    pF[s.faceOffset + s.length] = p_[unknownOf_[last]];
+                    J[s.faceOffset + s.length] = 0;
+                }
+            }
+            // A processor face as an interior one, the neighbour rank's
+            // cell from its slot
+            auto ghostFace = [&](label f, double pl, double pr, double ol,
+                                 double orr)
+            {
+                uF[f] = uStarF_[d][f] - dt*(pr - pl)/(dx*rhoF_[d][f]);
+                pF[f] = 0.5*(pl + pr);
+                usF[f] = 0;
+                J[f] = open[f]*(pl - pr + rhoF_[d][f]*g_[d]*dx);
+                shareL_[f] = ol/(ol + orr);
+            };
+            if (s.lowGhost >= 0)
+            {
+                ghostFace
+                (
+                    s.faceOffset, pG[s.lowGhost], p_[unknownOf_[first]],
+                    openRemote(s.lowGhost),
+                    max(1 - phiCell_[first], gasVolumeMin_)
+                );
+            }
+            if (s.highGhost >= 0)
+            {
+                ghostFace
+                (
+                    s.faceOffset + s.length,
+                    p_[unknownOf_[last]], pG[s.highGhost],
+                    max(1 - phiCell_[last], gasVolumeMin_),
+                    openRemote(s.highGhost)
+                );
             }
         }
         const std::vector<label>& nodes = lattice_.nodes(d);
@@ -375,14 +528,19 @@ bool Foam::csmpmStepper::pressureStep
         {
             const solidLattice::face& fc = lattice_.faces(d)[slot];
             if (R[fc.f] <= 0) continue;
+            const List<vector>& v = par ? vsAll_ : vs;
             double u = 0;
             for (label e = fc.node0; e < fc.node0 + fc.nNodes; ++e)
             {
-                u += w[e]*vs[nodes[e]][d];
+                u += w[e]*v[nodes[e]][d];
             }
             // The solid's work reaches the gas on the face's gas side
             // only: none between two cells the solid covers
-            usF[fc.f] = u*(1 - min(phiCell_[fc.l], phiCell_[fc.r]));
+            const double phiL =
+                fc.l >= 0 ? phiCell_[fc.l] : lattice_.phiRemote(fc.slot);
+            const double phiR =
+                fc.r >= 0 ? phiCell_[fc.r] : lattice_.phiRemote(fc.slot);
+            usF[fc.f] = u*(1 - min(phiL, phiR));
         }
 
         const auto& lowFace = mesh_.lowFaceOf(d);
@@ -414,6 +572,7 @@ bool Foam::csmpmStepper::pressureStep
     mergeCoveredCells(out);
     lastRepaired_ = repairNearSolid(out);
 
+    bool ok = true;
     for (const label i : cells_)
     {
         if (!out.admissible(i, gamma_))
@@ -421,10 +580,17 @@ bool Foam::csmpmStepper::pressureStep
             rep.failedCell = i;
             rep.failure = out.whyInadmissible(i, gamma_)
               + " after the coupled pressure step";
-            return false;
+            ok = false;
+            break;
         }
     }
-    return true;
+    if (par && !returnReduce(ok, andOp<bool>()) && ok)
+    {
+        rep.failure = "a cell of another rank is inadmissible after the"
+            " coupled pressure step";
+        ok = false;
+    }
+    return ok;
 }
 
 
@@ -448,14 +614,31 @@ void Foam::csmpmStepper::mergeCoveredCells(gasState& out) const
         if (!(o < theta)) continue;
         label best = -1;
         double oBest = o;
+        bool bestRemote = false;
         for (label d = 0; d < 3; ++d)
         {
             if (!mesh_.active(d)) continue;
             const label st = mesh_.stride(d);
             const label f = mesh_.lowFaceOf(d)[i];
             const label nb[2] = {i - st, i + st};
-            for (const label j : nb)
+            for (label h = 0; h < 2; ++h)
             {
+                const label j = nb[h];
+                // Parallel: the neighbour rank's cell across a processor
+                // face, in the serial run's order of the candidates
+                const label slot = par_.valid()
+                    ? (h ? slotHi_[d][i] : slotLo_[d][i]) : -1;
+                if (slot >= 0)
+                {
+                    const double oj =
+                        max(1 - lattice_.phiRemote(slot), gasVolumeMin_);
+                    if (oj > oBest)
+                    {
+                        oBest = oj;
+                        bestRemote = true;
+                    }
+                    continue;
+                }
                 if (j < 0 || j >= nLat || cellAt[j] < 0) continue;
                 // a neighbour along this line (not across a line's end)
                 const label fj = mesh_.lowFaceOf(d)[j];
@@ -465,8 +648,20 @@ void Foam::csmpmStepper::mergeCoveredCells(gasState& out) const
                 {
                     oBest = oj;
                     best = j;
+                    bestRemote = false;
                 }
             }
+        }
+        if (bestRemote)
+        {
+            FatalErrorInFunction
+                << "The covered cell " << mesh_.cellAt()[i] << " of processor "
+                << Pstream::myProcNo() << " (solid fraction " << phiCell_[i]
+                << ") would merge its gas with a neighbour rank's cell: the"
+                << " covered-cell merge is not distributed. Decompose so"
+                << " that the solid's covered cells stay away from the"
+                << " processor boundaries, or run serially"
+                << exit(FatalError);
         }
         if (best < 0) continue;
         const double r = o/oBest;
@@ -512,6 +707,7 @@ Foam::label Foam::csmpmStepper::repairNearSolid(gasState& out) const
         {
             const label i = around[a];
             if (out.admissible(i, gamma_)) continue;
+            if (par_.valid()) checkNoRemoteRepair(i);
             label best = -1;
             double mBest = 0;
             for (label d = 0; d < 3; ++d)
@@ -543,5 +739,52 @@ Foam::label Foam::csmpmStepper::repairNearSolid(gasState& out) const
             ++nRepaired;
         }
     }
+    if (par_.valid())
+    {
+        // The cells beside a neighbour rank's solid
+        for (label d = 0; d < 3; ++d)
+        {
+            if (!mesh_.active(d)) continue;
+            for (const auto& s : mesh_.segments(d))
+            {
+                const label st = mesh_.stride(d);
+                const label last = s.start + (s.length - 1)*st;
+                if (s.lowGhost >= 0 && lattice_.phiRemote(s.lowGhost) > 0)
+                {
+                    if (!out.admissible(s.start, gamma_))
+                    {
+                        checkNoRemoteRepair(s.start);
+                    }
+                }
+                if (s.highGhost >= 0 && lattice_.phiRemote(s.highGhost) > 0)
+                {
+                    if (!out.admissible(last, gamma_))
+                    {
+                        checkNoRemoteRepair(last);
+                    }
+                }
+            }
+        }
+    }
     return nRepaired;
+}
+
+
+void Foam::csmpmStepper::checkNoRemoteRepair(label i) const
+{
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!mesh_.active(d)) continue;
+        if (slotLo_[d][i] >= 0 || slotHi_[d][i] >= 0)
+        {
+            FatalErrorInFunction
+                << "The gas of cell " << mesh_.cellAt()[i] << " of processor "
+                << Pstream::myProcNo() << " next to the solid is inadmissible"
+                << " after the coupled pressure step and lies at a processor"
+                << " face: its repair (pooling with a neighbour) is not"
+                << " distributed. Decompose so that the solid stays away"
+                << " from the processor boundaries, or run serially"
+                << exit(FatalError);
+        }
+    }
 }
