@@ -647,6 +647,15 @@ void Foam::csmpmStepper::summary() const
         << scalar(cgTotal_)/max(nSteps_, label(1)) << ", max " << cgMax_
         << ", gas cells next to the solid repaired (pooled with a"
         << " neighbour) " << nRepaired_ << nl;
+    if (par_.valid())
+    {
+        Info<< "CSMPM parallel: particles moved to another rank "
+            << returnReduce(par_->nMigratedTotal(), sumOp<label>())
+            << ", MPM grid exchanges " << returnReduce
+               (
+                   mpmParallel::commTime(), maxOp<scalar>()
+               ) << " s (largest over the ranks)" << nl;
+    }
     const char* names[5] =
         {"P2G and interfaces", "advection", "coupled solve",
          "MPM grid update", "G2P"};
