@@ -569,8 +569,15 @@ bool Foam::csmpmStepper::pressureStep
         }
     }
 
-    mergeCoveredCells(out);
-    lastRepaired_ = repairNearSolid(out);
+    if (par)
+    {
+        lastRepaired_ = mergeAndRepairParallel(out);
+    }
+    else
+    {
+        mergeCoveredCells(out);
+        lastRepaired_ = repairNearSolid(out);
+    }
 
     bool ok = true;
     for (const label i : cells_)
@@ -614,7 +621,6 @@ void Foam::csmpmStepper::mergeCoveredCells(gasState& out) const
         if (!(o < theta)) continue;
         label best = -1;
         double oBest = o;
-        bool bestRemote = false;
         for (label d = 0; d < 3; ++d)
         {
             if (!mesh_.active(d)) continue;
@@ -624,21 +630,6 @@ void Foam::csmpmStepper::mergeCoveredCells(gasState& out) const
             for (label h = 0; h < 2; ++h)
             {
                 const label j = nb[h];
-                // Parallel: the neighbour rank's cell across a processor
-                // face, in the serial run's order of the candidates
-                const label slot = par_.valid()
-                    ? (h ? slotHi_[d][i] : slotLo_[d][i]) : -1;
-                if (slot >= 0)
-                {
-                    const double oj =
-                        max(1 - lattice_.phiRemote(slot), gasVolumeMin_);
-                    if (oj > oBest)
-                    {
-                        oBest = oj;
-                        bestRemote = true;
-                    }
-                    continue;
-                }
                 if (j < 0 || j >= nLat || cellAt[j] < 0) continue;
                 // a neighbour along this line (not across a line's end)
                 const label fj = mesh_.lowFaceOf(d)[j];
@@ -648,20 +639,8 @@ void Foam::csmpmStepper::mergeCoveredCells(gasState& out) const
                 {
                     oBest = oj;
                     best = j;
-                    bestRemote = false;
                 }
             }
-        }
-        if (bestRemote)
-        {
-            FatalErrorInFunction
-                << "The covered cell " << mesh_.cellAt()[i] << " of processor "
-                << Pstream::myProcNo() << " (solid fraction " << phiCell_[i]
-                << ") would merge its gas with a neighbour rank's cell: the"
-                << " covered-cell merge is not distributed. Decompose so"
-                << " that the solid's covered cells stay away from the"
-                << " processor boundaries, or run serially"
-                << exit(FatalError);
         }
         if (best < 0) continue;
         const double r = o/oBest;
@@ -707,7 +686,6 @@ Foam::label Foam::csmpmStepper::repairNearSolid(gasState& out) const
         {
             const label i = around[a];
             if (out.admissible(i, gamma_)) continue;
-            if (par_.valid()) checkNoRemoteRepair(i);
             label best = -1;
             double mBest = 0;
             for (label d = 0; d < 3; ++d)
@@ -739,52 +717,8 @@ Foam::label Foam::csmpmStepper::repairNearSolid(gasState& out) const
             ++nRepaired;
         }
     }
-    if (par_.valid())
-    {
-        // The cells beside a neighbour rank's solid
-        for (label d = 0; d < 3; ++d)
-        {
-            if (!mesh_.active(d)) continue;
-            for (const auto& s : mesh_.segments(d))
-            {
-                const label st = mesh_.stride(d);
-                const label last = s.start + (s.length - 1)*st;
-                if (s.lowGhost >= 0 && lattice_.phiRemote(s.lowGhost) > 0)
-                {
-                    if (!out.admissible(s.start, gamma_))
-                    {
-                        checkNoRemoteRepair(s.start);
-                    }
-                }
-                if (s.highGhost >= 0 && lattice_.phiRemote(s.highGhost) > 0)
-                {
-                    if (!out.admissible(last, gamma_))
-                    {
-                        checkNoRemoteRepair(last);
-                    }
-                }
-            }
-        }
-    }
     return nRepaired;
 }
 
 
-void Foam::csmpmStepper::checkNoRemoteRepair(label i) const
-{
-    for (label d = 0; d < 3; ++d)
-    {
-        if (!mesh_.active(d)) continue;
-        if (slotLo_[d][i] >= 0 || slotHi_[d][i] >= 0)
-        {
-            FatalErrorInFunction
-                << "The gas of cell " << mesh_.cellAt()[i] << " of processor "
-                << Pstream::myProcNo() << " next to the solid is inadmissible"
-                << " after the coupled pressure step and lies at a processor"
-                << " face: its repair (pooling with a neighbour) is not"
-                << " distributed. Decompose so that the solid stays away"
-                << " from the processor boundaries, or run serially"
-                << exit(FatalError);
-        }
-    }
-}
+// ************************************************************************* //
