@@ -40,9 +40,8 @@ Description
     the rank of their new cell, every rank writes its cloud (with J^g), so
     reconstructPar merges it and a parallel run restarts from any written
     time.  The results agree with serial to round-off
-    (tests/cases/csmpmParallel).  A 1D coupled case, a processor directory
-    without its cloud, and a covered-cell merge across a processor face
-    stop with a FatalError.
+    (tests/cases/csmpmParallel).  A 1D coupled case and a processor
+    directory without its cloud stop with a FatalError.
 
 Usage
     shockMpmFoam [-case dir] [-parallel]
