@@ -77,6 +77,7 @@ Foam::latticeRing::latticeRing(const cartesianMesh& lattice)
     // origin over the ranks
     vector gOrigin(lat_.origin());
     reduce(gOrigin, minOp<vector>());
+    gOrigin_ = gOrigin;
     for (label d = 0; d < 3; ++d)
     {
         sh_[d] = lat_.active(d) ? 1 : 0;
@@ -202,18 +203,6 @@ Foam::latticeRing::latticeRing(const cartesianMesh& lattice)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::label Foam::latticeRing::cellLo(label d) const
-{
-    return off_[d] == 0 ? sh_[d] : 0;
-}
-
-
-Foam::label Foam::latticeRing::cellHi(label d) const
-{
-    return off_[d] + lat_.n(d) == N_[d] ? nE_[d] - 1 - sh_[d] : nE_[d] - 1;
-}
-
 
 Foam::label Foam::latticeRing::cellOf(label idx) const
 {

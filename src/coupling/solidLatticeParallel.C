@@ -49,20 +49,22 @@ void Foam::solidLattice::depositParallel
         std::fill(VfaceE_[d].begin(), VfaceE_[d].end(), 0.0);
     }
 
-    // Linear hats clamped at the global lattice's ends (grown-box cells
-    // cellLo..cellHi), as the serial deposit clamps at its ends
-    label lo[3], hi[3];
+    // Linear hats in the global lattice's coordinates (the serial run's
+    // weights, bit for bit), clamped at its ends as the serial deposit;
+    // then shifted to the grown box
+    const point& o = ring.globalOrigin();
+    label N[3], shift[3];
     for (label e = 0; e < 3; ++e)
     {
-        lo[e] = ring.cellLo(e);
-        hi[e] = ring.cellHi(e);
+        N[e] = ring.N(e);
+        shift[e] = ring.off(e) - sh_[e];
     }
-    auto hat = [](double s, label l, label h, label& i0, double& t)
+    auto hat = [](double s, label nCells, label& i0, double& t)
     {
         i0 = label(std::floor(s));
         t = s - i0;
-        if (i0 < l) { i0 = l; t = 0; }
-        if (i0 >= h) { i0 = h; t = 0; }
+        if (i0 < 0) { i0 = 0; t = 0; }
+        if (i0 >= nCells - 1) { i0 = nCells - 1; t = 0; }
     };
 
     forAll(P.x, p)
@@ -77,8 +79,8 @@ void Foam::solidLattice::depositParallel
         for (label e = 0; e < 3; ++e)
         {
             if (!lat_.active(e)) { c0[e] = 0; tc[e] = 0; s[e] = 0; continue; }
-            s[e] = (P.x[p][e] - lat_.origin()[e])/lat_.dx(e) + sh_[e];
-            hat(s[e] - 0.5, lo[e], hi[e], c0[e], tc[e]);
+            s[e] = (P.x[p][e] - o[e])/lat_.dx(e);
+            hat(s[e] - 0.5, N[e], c0[e], tc[e]);
         }
 
         for (label a = 0; a < 2; ++a)
@@ -89,7 +91,11 @@ void Foam::solidLattice::depositParallel
                 (a ? tc[0] : 1 - tc[0])*(b ? tc[1] : 1 - tc[1])
                *(k ? tc[2] : 1 - tc[2]);
             if (w <= 0) continue;
-            const label idx = ring.cellE(c0[0] + a, c0[1] + b, c0[2] + k);
+            const label idx = ring.cellE
+            (
+                c0[0] + a - shift[0], c0[1] + b - shift[1],
+                c0[2] + k - shift[2]
+            );
             VcellE_[idx] += w*Vp;
             pgE_[idx] += w*Vp*pgp[p];
             KgE_[idx] += w*Vp*Kgp[p];
@@ -103,8 +109,8 @@ void Foam::solidLattice::depositParallel
             label f0[3];
             double tf[3];
             for (label e = 0; e < 3; ++e) { f0[e] = c0[e]; tf[e] = tc[e]; }
-            // faces lo..hi + 1 along d
-            hat(s[d], lo[d], hi[d] + 1, f0[d], tf[d]);
+            // faces 0..N along d
+            hat(s[d], N[d] + 1, f0[d], tf[d]);
             for (label a = 0; a < 2; ++a)
             for (label b = 0; b < 2; ++b)
             for (label k = 0; k < 2; ++k)
@@ -113,8 +119,14 @@ void Foam::solidLattice::depositParallel
                     (a ? tf[0] : 1 - tf[0])*(b ? tf[1] : 1 - tf[1])
                    *(k ? tf[2] : 1 - tf[2]);
                 if (w <= 0) continue;
-                VfaceE_[d][ring.faceE(d, f0[0] + a, f0[1] + b, f0[2] + k)]
-                    += w*Vp;
+                VfaceE_[d]
+                [
+                    ring.faceE
+                    (
+                        d, f0[0] + a - shift[0], f0[1] + b - shift[1],
+                        f0[2] + k - shift[2]
+                    )
+                ] += w*Vp;
             }
         }
     }
