@@ -4,6 +4,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "coupledPressureSystem.H"
+#include "mpmParallel.H"
+#include "PstreamReduceOps.H"
 #include <cmath>
 #include <numeric>
 #include <algorithm>
@@ -41,8 +43,14 @@ void Foam::coupledPressureSystem::addFaceNode
         rowNode_.push_back(node);
         rowDir_.push_back(d);
     }
-    tRow_.push_back(row); tCol_.push_back(l); tVal_.push_back(-w);
-    tRow_.push_back(row); tCol_.push_back(r); tVal_.push_back(w);
+    if (l >= 0)
+    {
+        tRow_.push_back(row); tCol_.push_back(l); tVal_.push_back(-w);
+    }
+    if (r >= 0)
+    {
+        tRow_.push_back(row); tCol_.push_back(r); tVal_.push_back(w);
+    }
 }
 
 
@@ -129,6 +137,23 @@ void Foam::coupledPressureSystem::applyT
         }
         y[k] = s;
     }
+    if (par)
+    {
+        // Each rank's part holds its cells' columns: the sum over the
+        // ranks holding the node
+        rowsAll_.setSize(par->view().nVertices());
+        rowsAll_ = Zero;
+        for (label k = 0; k < nR; ++k) rowsAll_[rowNode_[k]][rowDir_[k]] = y[k];
+        par->sumShared(rowsAll_);
+        for (label k = 0; k < nR; ++k) y[k] = rowsAll_[rowNode_[k]][rowDir_[k]];
+    }
+}
+
+
+double Foam::coupledPressureSystem::gSum(double x)
+{
+    if (Pstream::parRun()) reduce(x, sumOp<double>());
+    return x;
 }
 
 
@@ -142,7 +167,7 @@ void Foam::coupledPressureSystem::multiply
     // too: take that back out, then add T^T M^-1 T x exactly)
     gas.multiply(x, y);
     const label nR = nRows();
-    if (nR == 0) return;
+    if (nR == 0 && !par) return;
     applyT(x, u_);
     for (label k = 0; k < nR; ++k)
     {
@@ -172,7 +197,7 @@ Foam::label Foam::coupledPressureSystem::solve
     p_.resize(n);
     double bNorm = 0;
     for (label i = 0; i < n; ++i) bNorm += b[i]*b[i];
-    bNorm = std::sqrt(bNorm);
+    bNorm = std::sqrt(gSum(bNorm));
     if (bNorm == 0)
     {
         x.assign(n, 0.0);
@@ -189,12 +214,15 @@ Foam::label Foam::coupledPressureSystem::solve
         rz += r_[i]*z_[i];
         rr += r_[i]*r_[i];
     }
+    rz = gSum(rz);
+    rr = gSum(rr);
     label iter = 0;
     while (std::sqrt(rr) > tol*bNorm && iter < maxIter)
     {
         multiply(p_, Ap_);
         double pAp = 0;
         for (label i = 0; i < n; ++i) pAp += p_[i]*Ap_[i];
+        pAp = gSum(pAp);
         if (!(pAp > 0) || !std::isfinite(pAp)) break;
         const double alpha = rz/pAp;
         double rzNew = 0;
@@ -207,6 +235,8 @@ Foam::label Foam::coupledPressureSystem::solve
             rzNew += r_[i]*z_[i];
             rr += r_[i]*r_[i];
         }
+        rzNew = gSum(rzNew);
+        rr = gSum(rr);
         const double beta = rzNew/rz;
         rz = rzNew;
         for (label i = 0; i < n; ++i) p_[i] = z_[i] + beta*p_[i];

@@ -21,6 +21,8 @@ void Foam::csmpmStepper::couplingFaces()
     // Only the faces and cells the deposit touched are visited; those of
     // the previous step are reset first
     const scalar tiny = nodeMassMin_;
+    // (parallel: every copy's mass is the ranks' common one)
+    const List<scalar>& mass = par_.valid() ? massAll_ : grid.mass;
     for (label d = 0; d < 3; ++d)
     {
         if (!mesh_.active(d)) continue;
@@ -52,12 +54,12 @@ void Foam::csmpmStepper::couplingFaces()
             double ws = 0;
             for (label e = fc.node0; e < fc.node0 + fc.nNodes; ++e)
             {
-                if (grid.mass[nodes[e]] > tiny) ws += w[e];
+                if (mass[nodes[e]] > tiny) ws += w[e];
             }
             if (ws <= 0) continue;
             for (label e = fc.node0; e < fc.node0 + fc.nNodes; ++e)
             {
-                wNorm_[d][e] = grid.mass[nodes[e]] > tiny ? w[e]/ws : 0;
+                wNorm_[d][e] = mass[nodes[e]] > tiny ? w[e]/ws : 0;
             }
             Reff_[d][f] = R[f];
             openEff_[d][f] = 1 - R[f];
@@ -89,6 +91,17 @@ bool Foam::csmpmStepper::pressureStep
     const PtrList<gasBoundary>& bcs = op_.boundaries();
     mpmGrid& grid = solver_.grid();
     List<vector>& vs = grid.newVelocity;
+    const bool par = par_.valid();
+    const List<scalar>& mass = par ? massAll_ : grid.mass;
+
+    // Parallel: the neighbour ranks' advected cells at processor faces,
+    // and their solid fractions
+    std::vector<double> gS;
+    if (par) mesh_.exchangeGhosts(Ustar_.q, 1, gS);
+    auto openRemote = [&](label slot)
+    {
+        return max(1 - lattice_.phiRemote(slot), gasVolumeMin_);
+    };
 
     auto pressure = [&](const gasState& S, label i)
     {
@@ -167,11 +180,63 @@ bool Foam::csmpmStepper::pressureStep
                     s.faceOffset + m, s.start + (m - 1)*st, s.start + m*st
                 );
             }
+            // A processor face: the neighbour rank's cell is one side
+            auto coupleGhost = [&](label f, label slot, label i, bool low)
+            {
+                const double* g = gS.data() + 5*slot;
+                const double dG = g[0]/openRemote(slot);
+                const double dI =
+                    Ustar_.q[0][i]/max(1 - phiCell_[i], gasVolumeMin_);
+                const double rhoF = low ? 0.5*(dG + dI) : 0.5*(dI + dG);
+                const double uG = g[1 + d]/g[0];
+                const double uI = Ustar_.q[1 + d][i]/Ustar_.q[0][i];
+                const double uS = (low ? 0.5*(uG + uI) : 0.5*(uI + uG))
+                  + dt*g_[d];
+                rhoF_[d][f] = rhoF;
+                uStarF_[d][f] = uS;
+                const double a = open[f];
+                if (a <= 0) return;
+                const label k = unknownOf_[i];
+                gsys.coupleRemote(k, slot, a*A/(rhoF*dx));
+                if (low) gsys.source[k] += a*A*uS/dt;
+                else gsys.source[k] -= a*A*uS/dt;
+            };
             const label first = s.start;
             const label last = s.start + (s.length - 1)*st;
             if (periodic)
             {
                 coupleCells(s.faceOffset, last, first);
+            }
+            else if (s.lowGhost >= 0 || s.highGhost >= 0)
+            {
+                double q[5];
+                if (s.lowGhost >= 0)
+                {
+                    coupleGhost(s.faceOffset, s.lowGhost, first, true);
+                }
+                else
+                {
+                    for (int c = 0; c < 5; ++c) q[c] = Ustar_.q[c][first];
+                    const double uLo = bcs[s.lowPatch].faceVelocity(q, d);
+                    uF_[d][s.faceOffset] = uLo;
+                    usF_[d][s.faceOffset] = uLo;
+                    gsys.source[unknownOf_[first]] += A*uLo/dt;
+                }
+                if (s.highGhost >= 0)
+                {
+                    coupleGhost
+                    (
+                        s.faceOffset + s.length, s.highGhost, last, false
+                    );
+                }
+                else
+                {
+                    for (int c = 0; c < 5; ++c) q[c] = Ustar_.q[c][last];
+                    const double uHi = bcs[s.highPatch].faceVelocity(q, d);
+                    uF_[d][s.faceOffset + s.length] = uHi;
+                    usF_[d][s.faceOffset + s.length] = uHi;
+                    gsys.source[unknownOf_[last]] -= A*uHi/dt;
+                }
             }
             else
             {
@@ -205,11 +270,13 @@ bool Foam::csmpmStepper::pressureStep
             const solidLattice::face& fc = lattice_.faces(d)[slot];
             const double Rf = R[fc.f];
             if (Rf <= 0) continue;
-            const label kl = unknownOf_[fc.l], kr = unknownOf_[fc.r];
+            // (a processor face: the neighbour rank adds its cell's column)
+            const label kl = fc.l >= 0 ? unknownOf_[fc.l] : -1;
+            const label kr = fc.r >= 0 ? unknownOf_[fc.r] : -1;
             for (label e = fc.node0; e < fc.node0 + fc.nNodes; ++e)
             {
                 const label i = nodes[e];
-                if (!(grid.mass[i] > tiny)) continue;
+                if (!(mass[i] > tiny)) continue;
                 sys_.addFaceNode(i, d, kl, kr, A*Rf*w[e]);
             }
         }
@@ -220,11 +287,26 @@ bool Foam::csmpmStepper::pressureStep
         for (label k = 0; k < sys_.nRows(); ++k)
         {
             const label i = sys_.rowNode(k);
-            massScaled_[i] = sc*grid.mass[i];
+            massScaled_[i] = sc*mass[i];
         }
     }
     sys_.endSolid(massScaled_);
-    sys_.addSolidSource(vs, dt);
+    if (par)
+    {
+        // v* at every copy of a node (a copy no particle of its rank
+        // touches holds zero; the others hold the same sum)
+        vsAll_ = vs;
+        par_->combineShared
+        (
+            vsAll_,
+            [](const vector& a, const vector& b)
+            {
+                return magSqr(a) > 0 ? a : b;
+            },
+            nullptr
+        );
+    }
+    sys_.addSolidSource(par ? vsAll_ : vs, dt);
 
     rep.cgIterations = sys_.solve(p_, tol_, maxIter_, rep.cgResidual);
     if (!std::isfinite(rep.cgResidual) || rep.cgResidual > 1e-3)
@@ -240,10 +322,32 @@ bool Foam::csmpmStepper::pressureStep
     {
         // (3.36): v = v* - dt M^-1 T p on the solid's nodes
         sys_.applyT(p_, Tp_);
-        for (label k = 0; k < sys_.nRows(); ++k)
+        if (!par)
         {
-            const label i = sys_.rowNode(k);
-            vs[i][sys_.rowDir(k)] -= dt*Tp_[k]/massScaled_[i];
+            for (label k = 0; k < sys_.nRows(); ++k)
+            {
+                const label i = sys_.rowNode(k);
+                vs[i][sys_.rowDir(k)] -= dt*Tp_[k]/massScaled_[i];
+            }
+        }
+        else
+        {
+            // Every copy of a node takes the update, also a copy whose
+            // rank holds no face of it (its particles still read it):
+            // T p summed over the ranks is zero off the rows
+            const List<vector>& Tp = sys_.rowsSummed();
+            const scalar sc = lattice_.scale();
+            forAll(vsAll_, i)
+            {
+                if (!(mass[i] > tiny)) continue;
+                for (label d = 0; d < 3; ++d)
+                {
+                    if (Tp[i][d] == 0) continue;
+                    const double dv = dt*Tp[i][d]/(sc*mass[i]);
+                    vsAll_[i][d] -= dv;
+                    if (grid.isActive[i]) vs[i][d] -= dv;
+                }
+            }
         }
     }
     else
@@ -313,6 +417,18 @@ bool Foam::csmpmStepper::pressureStep
         }
     }
 
+    // Parallel: the neighbour ranks' pressures at processor faces
+    std::vector<double> pG;
+    if (par)
+    {
+        std::vector<double> mine(sys_.gas.slotUnknown.size());
+        for (size_t j = 0; j < mine.size(); ++j)
+        {
+            mine[j] = p_[sys_.gas.slotUnknown[j]];
+        }
+        mesh_.exchangeSlots(mine, pG);
+    }
+
     // (3.21) gas face velocities; the solid's velocity at each face
     for (int c = 0; c < 5; ++c) out.q[c] = Ustar_.q[c];
     for (label d = 0; d < 3; ++d)
@@ -362,10 +478,47 @@ bool Foam::csmpmStepper::pressureStep
             }
             else
             {
-                pF[s.faceOffset] = p_[unknownOf_[first]];
-                pF[s.faceOffset + s.length] = p_[unknownOf_[last]];
-                J[s.faceOffset] = 0;
-                J[s.faceOffset + s.length] = 0;
+                // (a processor face's J holds u* until ghostFace below)
+                if (s.lowGhost < 0)
+                {
+                    pF[s.faceOffset] = p_[unknownOf_[first]];
+                    J[s.faceOffset] = 0;
+                }
+                if (s.highGhost < 0)
+                {
+                    pF[s.faceOffset + s.length] = p_[unknownOf_[last]];
+                    J[s.faceOffset + s.length] = 0;
+                }
+            }
+            // A processor face as an interior one, the neighbour rank's
+            // cell from its slot
+            auto ghostFace = [&](label f, double pl, double pr, double ol,
+                                 double orr)
+            {
+                uF[f] = uStarF_[d][f] - dt*(pr - pl)/(dx*rhoF_[d][f]);
+                pF[f] = 0.5*(pl + pr);
+                usF[f] = 0;
+                J[f] = open[f]*(pl - pr + rhoF_[d][f]*g_[d]*dx);
+                shareL_[f] = ol/(ol + orr);
+            };
+            if (s.lowGhost >= 0)
+            {
+                ghostFace
+                (
+                    s.faceOffset, pG[s.lowGhost], p_[unknownOf_[first]],
+                    openRemote(s.lowGhost),
+                    max(1 - phiCell_[first], gasVolumeMin_)
+                );
+            }
+            if (s.highGhost >= 0)
+            {
+                ghostFace
+                (
+                    s.faceOffset + s.length,
+                    p_[unknownOf_[last]], pG[s.highGhost],
+                    max(1 - phiCell_[last], gasVolumeMin_),
+                    openRemote(s.highGhost)
+                );
             }
         }
         const std::vector<label>& nodes = lattice_.nodes(d);
@@ -375,10 +528,11 @@ bool Foam::csmpmStepper::pressureStep
         {
             const solidLattice::face& fc = lattice_.faces(d)[slot];
             if (R[fc.f] <= 0) continue;
+            const List<vector>& v = par ? vsAll_ : vs;
             double u = 0;
             for (label e = fc.node0; e < fc.node0 + fc.nNodes; ++e)
             {
-                u += w[e]*vs[nodes[e]][d];
+                u += w[e]*v[nodes[e]][d];
             }
             usF[fc.f] = u;
         }
@@ -417,9 +571,17 @@ bool Foam::csmpmStepper::pressureStep
         }
     }
 
-    mergeCoveredCells(out);
-    lastRepaired_ = repairNearSolid(out);
+    if (par)
+    {
+        lastRepaired_ = mergeAndRepairParallel(out);
+    }
+    else
+    {
+        mergeCoveredCells(out);
+        lastRepaired_ = repairNearSolid(out);
+    }
 
+    bool ok = true;
     for (const label i : cells_)
     {
         if (!out.admissible(i, gamma_))
@@ -427,127 +589,21 @@ bool Foam::csmpmStepper::pressureStep
             rep.failedCell = i;
             rep.failure = out.whyInadmissible(i, gamma_)
               + " after the coupled pressure step";
-            return false;
+            ok = false;
+            break;
         }
     }
-    return true;
+    if (par && !returnReduce(ok, andOp<bool>()) && ok)
+    {
+        rep.failure = "a cell of another rank is inadmissible after the"
+            " coupled pressure step";
+        ok = false;
+    }
+    return ok;
 }
 
 
 // ************************************************************************* //
 
-// A cell the solid mostly covers (open fraction o < 1/2) keeps only the gas
-// its open volume holds at the state of its most open neighbour (o_n > o):
-// content o/o_n times the neighbour's; the rest of its mass, momentum and
-// energy (or the deficit) goes to that neighbour.  Conservative, and
-// positive (the neighbour keeps (1 - o/o_n) of its content plus the cell's),
-// so that the few gas a covered cell holds cannot be driven to a negative
-// pressure by the pressure work around it
-void Foam::csmpmStepper::mergeCoveredCells(gasState& out) const
-{
-    const double theta = 0.5;
-    const auto& cellAt = mesh_.cellAt();
-    const label nLat = mesh_.nLattice();
-    for (const label i : phiCells_)
-    {
-        const double o = max(1 - phiCell_[i], gasVolumeMin_);
-        if (!(o < theta)) continue;
-        label best = -1;
-        double oBest = o;
-        for (label d = 0; d < 3; ++d)
-        {
-            if (!mesh_.active(d)) continue;
-            const label st = mesh_.stride(d);
-            const label f = mesh_.lowFaceOf(d)[i];
-            const label nb[2] = {i - st, i + st};
-            for (const label j : nb)
-            {
-                if (j < 0 || j >= nLat || cellAt[j] < 0) continue;
-                // a neighbour along this line (not across a line's end)
-                const label fj = mesh_.lowFaceOf(d)[j];
-                if (fj != f - 1 && fj != f + 1) continue;
-                const double oj = max(1 - phiCell_[j], gasVolumeMin_);
-                if (oj > oBest)
-                {
-                    oBest = oj;
-                    best = j;
-                }
-            }
-        }
-        if (best < 0) continue;
-        const double r = o/oBest;
-        for (int c = 0; c < 5; ++c)
-        {
-            const double keep = r*out.q[c][best];
-            out.q[c][best] += out.q[c][i] - keep;
-            out.q[c][i] = keep;
-        }
-    }
-}
 
-// A cell next to the solid (it or a face neighbour has a solid fraction)
-// whose gas the pressure step left inadmissible (a near-vacuum behind a
-// body in a strong flow, a sliver of gas in a mixed cell) is pooled with
-// the face neighbour holding the most gas: their summed mass, momentum and
-// energy shared by their open volumes.  Conservative; the step fails as
-// before if the pooled state is inadmissible too.  Returns the cells
-// repaired
-Foam::label Foam::csmpmStepper::repairNearSolid(gasState& out) const
-{
-    label nRepaired = 0;
-    const auto& cellAt = mesh_.cellAt();
-    const label nLat = mesh_.nLattice();
-    for (const label c : phiCells_)
-    {
-        // the solid cell and its face neighbours
-        label around[7] = {c, -1, -1, -1, -1, -1, -1};
-        label nA = 1;
-        for (label d = 0; d < 3; ++d)
-        {
-            if (!mesh_.active(d)) continue;
-            const label st = mesh_.stride(d);
-            const label f = mesh_.lowFaceOf(d)[c];
-            for (const label j : {c - st, c + st})
-            {
-                if (j < 0 || j >= nLat || cellAt[j] < 0) continue;
-                const label fj = mesh_.lowFaceOf(d)[j];
-                if (fj == f - 1 || fj == f + 1) around[nA++] = j;
-            }
-        }
-        for (label a = 0; a < nA; ++a)
-        {
-            const label i = around[a];
-            if (out.admissible(i, gamma_)) continue;
-            label best = -1;
-            double mBest = 0;
-            for (label d = 0; d < 3; ++d)
-            {
-                if (!mesh_.active(d)) continue;
-                const label st = mesh_.stride(d);
-                const label f = mesh_.lowFaceOf(d)[i];
-                for (const label j : {i - st, i + st})
-                {
-                    if (j < 0 || j >= nLat || cellAt[j] < 0) continue;
-                    const label fj = mesh_.lowFaceOf(d)[j];
-                    if (fj != f - 1 && fj != f + 1) continue;
-                    if (out.q[0][j] > mBest && out.admissible(j, gamma_))
-                    {
-                        mBest = out.q[0][j];
-                        best = j;
-                    }
-                }
-            }
-            if (best < 0) continue;
-            const double oi = max(1 - phiCell_[i], gasVolumeMin_);
-            const double ob = max(1 - phiCell_[best], gasVolumeMin_);
-            for (int k = 0; k < 5; ++k)
-            {
-                const double sum = out.q[k][i] + out.q[k][best];
-                out.q[k][i] = sum*oi/(oi + ob);
-                out.q[k][best] = sum*ob/(oi + ob);
-            }
-            ++nRepaired;
-        }
-    }
-    return nRepaired;
-}
+// ************************************************************************* //

@@ -69,14 +69,19 @@ Foam::csmpmStepper::csmpmStepper
         )
     ),
     cloudName_(mpmDict_.getOrDefault<word>("cloudName", "mpmCloud")),
-    view_(mesh),
-    boundary_(mesh, view_, mpmDict_.subOrEmptyDict("boundary")),
+    par_(Pstream::parRun() ? new mpmParallel(mesh) : nullptr),
+    serialView_(Pstream::parRun() ? nullptr : new mpmMeshView(mesh)),
+    view_(par_.valid() ? par_->view() : serialView_()),
+    boundary_
+    (
+        mesh, view_, mpmDict_.subOrEmptyDict("boundary"), par_.get()
+    ),
     solver_(view_, mpmDict_, boundary_),
     gasOnly_(std::move(gasOnly)),
     order_(stepOrder::couplingFirst),
     tol_(1e-10),
     maxIter_(1000),
-    lattice_(op.mesh(), view_)
+    lattice_(op.mesh(), view_, Pstream::parRun())
 {
     const dictionary& gasDict = gasDictOf(shockMpmDict);
     const word stepper(gasDict.getOrDefault<word>("stepper", "explicit"));
@@ -88,14 +93,7 @@ Foam::csmpmStepper::csmpmStepper
             << " pressure system of the coupling." << nl
             << "    allowed: semiImplicit" << exit(FatalIOError);
     }
-    if (Pstream::parRun())
-    {
-        FatalErrorInFunction
-            << "shockMpmFoam with solids (constant/mpmProperties) runs"
-            << " serially so far: the coupled pressure system is not"
-            << " distributed. Run without -parallel, or remove the solid"
-            << exit(FatalError);
-    }
+    if (par_.valid()) solver_.setParallel(par_());
     tol_ = dictionaryChecks::getPositive(gasDict, "CGtolerance", 1e-10);
     maxIter_ =
         dictionaryChecks::getLabelAtLeast(gasDict, "CGmaxIter", 1000, 1);
@@ -136,9 +134,23 @@ Foam::csmpmStepper::csmpmStepper
             );
         }
         localGradient_ = su == "localGradient";
+        if (localGradient_ && Pstream::parRun())
+        {
+            FatalIOErrorInFunction(cDict)
+                << cDict.name() << ": solidUpdate localGradient (the"
+                << " ablation of Fig. 3.3) runs serially only." << nl
+                << "    allowed with -parallel: eliminated"
+                << exit(FatalIOError);
+        }
     }
 
-    if (!mpmCloudIO::read(mesh, cloudName_, P_) || P_.size() == 0)
+    bool idsRead = true;
+    const bool found = mpmCloudIO::read(mesh, cloudName_, P_, &idsRead);
+    if (Pstream::parRun())
+    {
+        checkParallelCloud(found, idsRead);
+    }
+    else if (!found || P_.size() == 0)
     {
         FatalErrorInFunction
             << "No particles: " << mesh.time().timePath()/cloud::prefix
@@ -153,6 +165,7 @@ Foam::csmpmStepper::csmpmStepper
     {
         scalar mMin = GREAT;
         forAll(P_.m, p) mMin = min(mMin, P_.m[p]);
+        if (Pstream::parRun()) reduce(mMin, minOp<scalar>());
         nodeMassMin_ = 1e-3*mMin;
     }
     (void)U;
@@ -162,6 +175,32 @@ Foam::csmpmStepper::csmpmStepper
     unknownOf_.assign(nLat, -1);
     for (size_t k = 0; k < cells_.size(); ++k) unknownOf_[cells_[k]] = label(k);
     p_.assign(cells_.size(), 0.0);
+    if (par_.valid())
+    {
+        // The gas's couplings across processor faces; T x over the ranks
+        sys_.gas.mesh = &mesh_;
+        sys_.gas.slotUnknown.resize(mesh_.nGhostSlots());
+        for (label j = 0; j < mesh_.nGhostSlots(); ++j)
+        {
+            sys_.gas.slotUnknown[j] = unknownOf_[mesh_.slotCell(j)];
+        }
+        sys_.par = par_.get();
+        for (label d = 0; d < 3; ++d)
+        {
+            if (!mesh_.active(d)) continue;
+            slotLo_[d].assign(mesh_.nLattice(), -1);
+            slotHi_[d].assign(mesh_.nLattice(), -1);
+            const label st = mesh_.stride(d);
+            for (const auto& s : mesh_.segments(d))
+            {
+                if (s.lowGhost >= 0) slotLo_[d][s.start] = s.lowGhost;
+                if (s.highGhost >= 0)
+                {
+                    slotHi_[d][s.start + (s.length - 1)*st] = s.highGhost;
+                }
+            }
+        }
+    }
     for (label d = 0; d < 3; ++d)
     {
         if (!mesh_.active(d)) continue;
@@ -229,7 +268,8 @@ Foam::csmpmStepper::csmpmStepper
     Vold_.setSize(P_.size());
     checkInlets(shockMpmDict);
 
-    Info<< "CSMPM coupling: " << P_.size() << " particles, "
+    Info<< "CSMPM coupling: " << returnReduce(P_.size(), sumOp<label>())
+        << " particles, "
         << view_.nVertices() << " MPM nodes on the gas lattice, order "
         << stepOrderNames[order_] << ", kernel " << solver_.kernel().type()
         << nl;
@@ -242,25 +282,10 @@ void Foam::csmpmStepper::readGhost
     const dictionary& gasDict
 )
 {
-    lambdaG_.setSize(P_.size());
-    const bool given = cDict.found("ghostLambda");
-    const scalar lg =
-        given ? dictionaryChecks::getPositive(cDict, "ghostLambda") : 0;
-    forAll(P_.x, p)
-    {
-        lambdaG_[p] =
-            given ? lg : solver_.materials()[P_.material[p]].lambda();
-        if (!(lambdaG_[p] > 0))
-        {
-            FatalIOErrorInFunction(cDict)
-                << "The material " << solver_.materials()[P_.material[p]]
-                   .name() << " has lambda " << lambdaG_[p] << " <= 0 (nu "
-                << solver_.materials()[P_.material[p]].nu() << "), so the"
-                << " ghost matrix (3.17) would not resist compression: set"
-                << " ghostLambda > 0 in " << cDict.name()
-                << exit(FatalIOError);
-        }
-    }
+    lambdaGiven_ = cDict.found("ghostLambda");
+    lambdaValue_ = lambdaGiven_
+        ? dictionaryChecks::getPositive(cDict, "ghostLambda") : 0;
+    setLambdaG(cDict);
 
     // J^g from the cloud on a restart
     IOobject io
@@ -286,6 +311,35 @@ void Foam::csmpmStepper::readGhost
         forAll(f, p) Jg_[p] = f[p];
         freshStart_ = false;
     }
+    if (Pstream::parRun())
+    {
+        // A rank without particles has no J^g: a restart if any has
+        freshStart_ = !returnReduce(!freshStart_, orOp<bool>());
+    }
+}
+
+
+void Foam::csmpmStepper::setLambdaG(const dictionary& cDict)
+{
+    lambdaG_.setSize(P_.size());
+    const bool given = lambdaGiven_;
+    const scalar lg = lambdaValue_;
+    forAll(P_.x, p)
+    {
+        lambdaG_[p] =
+            given ? lg : solver_.materials()[P_.material[p]].lambda();
+        if (!(lambdaG_[p] > 0))
+        {
+            FatalIOErrorInFunction(cDict)
+                << "The material " << solver_.materials()[P_.material[p]]
+                   .name() << " has lambda " << lambdaG_[p] << " <= 0 (nu "
+                << solver_.materials()[P_.material[p]].nu() << "), so the"
+                << " ghost matrix (3.17) would not resist compression: set"
+                << " ghostLambda > 0 in " << cDict.name()
+                << exit(FatalIOError);
+        }
+    }
+
 }
 
 
@@ -395,7 +449,11 @@ void Foam::csmpmStepper::checkInside() const
 
 bool Foam::csmpmStepper::caseHasSolid(const fvMesh& mesh)
 {
-    return isFile(mesh.time().constantPath()/"mpmProperties");
+    // (the case's constant directory, also for a processor mesh)
+    return isFile
+    (
+        mesh.time().globalPath()/mesh.time().constant()/"mpmProperties"
+    );
 }
 
 
@@ -432,6 +490,15 @@ bool Foam::csmpmStepper::advance
     {
         rep.failure = solver_.failure();
         return false;
+    }
+    if (par_.valid())
+    {
+        // Every copy of a node: the nodal mass of all the ranks' particles
+        // (a copy no particle of its rank touches holds none)
+        const mpmGrid& grid = solver_.grid();
+        massAll_.setSize(grid.mass.size());
+        forAll(massAll_, i) massAll_[i] = grid.isActive[i] ? grid.mass[i] : 0;
+        par_->maxShared(massAll_);
     }
     forAll(P_.x, p)
     {
@@ -487,10 +554,11 @@ bool Foam::csmpmStepper::advance
     // 7. G2P; J^g by (3.20) with the velocity gradient that updates F
     t0 = stageClock::now();
     forAll(P_.x, p) Vold_[p] = P_.V[p];
+    if (par_.valid()) idOld_ = P_.id;
     const bool moved = solver_.endStep(P_, dt);
     if (moved)
     {
-        forAll(P_.x, p) Jg_[p] *= P_.V[p]/Vold_[p];
+        updateJg();
     }
     stageTime_[4] += secondsSince(t0);
     if (!moved)
@@ -546,6 +614,12 @@ void Foam::csmpmStepper::solidTotals
         m += P_.m[p];
         mom += P_.m[p]*P_.v[p];
         kinetic += 0.5*P_.m[p]*magSqr(P_.v[p]);
+    }
+    if (Pstream::parRun())
+    {
+        reduce(m, sumOp<scalar>());
+        reduce(mom, sumOp<vector>());
+        reduce(kinetic, sumOp<scalar>());
     }
 }
 
@@ -620,10 +694,19 @@ void Foam::csmpmStepper::write() const
 void Foam::csmpmStepper::summary() const
 {
     Info<< "CSMPM coupling summary: " << nSteps_ << " coupled steps, "
-        << P_.size() << " particles, CG iterations mean "
+        << returnReduce(P_.size(), sumOp<label>()) << " particles, CG iterations mean "
         << scalar(cgTotal_)/max(nSteps_, label(1)) << ", max " << cgMax_
         << ", gas cells next to the solid repaired (pooled with a"
         << " neighbour) " << nRepaired_ << nl;
+    if (par_.valid())
+    {
+        Info<< "CSMPM parallel: particles moved to another rank "
+            << returnReduce(par_->nMigratedTotal(), sumOp<label>())
+            << ", MPM grid exchanges " << returnReduce
+               (
+                   mpmParallel::commTime(), maxOp<scalar>()
+               ) << " s (largest over the ranks)" << nl;
+    }
     const char* names[5] =
         {"P2G and interfaces", "advection", "coupled solve",
          "MPM grid update", "G2P"};

@@ -15,7 +15,7 @@ void Foam::solidLattice::build()
     scale_ = 1;
     for (label d = 0; d < 3; ++d)
     {
-        nv_[d] = lat_.active(d) ? lat_.n(d) + 1 : 1;
+        nv_[d] = lat_.active(d) ? lat_.n(d) + 1 + 2*sh_[d] : 1;
         if (!lat_.active(d)) scale_ *= lat_.dx(d);
     }
     vertexAt_.assign(nv_[0]*nv_[1]*nv_[2], -1);
@@ -23,11 +23,19 @@ void Foam::solidLattice::build()
     forAll(xv, v)
     {
         label ijk[3] = {0, 0, 0};
+        bool outside = false;
         for (label d = 0; d < 3; ++d)
         {
             if (!lat_.active(d) || d >= view_.dim()) continue;
-            const scalar s = (xv[v][d] - lat_.origin()[d])/lat_.dx(d);
+            const scalar s =
+                (xv[v][d] - lat_.origin()[d])/lat_.dx(d) + sh_[d];
             ijk[d] = label(std::lround(s));
+            if (ring_.valid() && mag(s - ijk[d]) <= 1e-6)
+            {
+                // a halo vertex beyond the grown box: no face's node
+                if (ijk[d] < 0 || ijk[d] >= nv_[d]) outside = true;
+                continue;
+            }
             if (mag(s - ijk[d]) > 1e-6 || ijk[d] < 0 || ijk[d] >= nv_[d])
             {
                 FatalErrorInFunction
@@ -37,6 +45,7 @@ void Foam::solidLattice::build()
                     << " along direction " << d << ")" << exit(FatalError);
             }
         }
+        if (outside) continue;
         vertexAt_[ijk[0] + nv_[0]*(ijk[1] + nv_[1]*ijk[2])] = v;
     }
 
@@ -52,18 +61,34 @@ void Foam::solidLattice::build()
         const label st = lat_.stride(d);
         for (const auto& s : lat_.segments(d))
         {
-            for (label m = 1; m < s.length; ++m)
+            // Parallel: the processor faces at the segment's ends too
+            const bool lowProc = ring_.valid() && s.lowGhost >= 0;
+            const bool highProc = ring_.valid() && s.highGhost >= 0;
+            const label m0 = lowProc ? 0 : 1;
+            const label m1 = highProc ? s.length + 1 : s.length;
+            for (label m = m0; m < m1; ++m)
             {
                 face fc;
                 fc.f = s.faceOffset + m;
-                fc.l = s.start + (m - 1)*st;
-                fc.r = s.start + m*st;
+                fc.l = m > 0 ? s.start + (m - 1)*st : -1;
+                fc.r = m < s.length ? s.start + m*st : -1;
+                fc.slot = m == 0 ? s.lowGhost : (m == s.length ? s.highGhost : -1);
                 fc.node0 = label(nodes_[d].size());
 
                 // (3.32) B-spline weights at the face centre: integer
-                // coordinate a along d, half-integers across
+                // coordinate a along d, half-integers across (vertex
+                // coordinates, shifted by the ring in parallel)
                 label c[3];
-                lat_.ijk(fc.r, c[0], c[1], c[2]);
+                if (fc.r >= 0)
+                {
+                    lat_.ijk(fc.r, c[0], c[1], c[2]);
+                }
+                else
+                {
+                    lat_.ijk(fc.l, c[0], c[1], c[2]);
+                    ++c[d];
+                }
+                for (label e = 0; e < 3; ++e) c[e] += sh_[e];
                 label lo[3], cnt[3];
                 double w[3][3];
                 for (label e = 0; e < 3; ++e)
@@ -128,12 +153,48 @@ void Foam::solidLattice::build()
 Foam::solidLattice::solidLattice
 (
     const cartesianMesh& lattice,
-    const mpmMeshView& view
+    const mpmMeshView& view,
+    const bool parallel
 )
 :
     lat_(lattice),
     view_(view)
 {
+    if (parallel && Pstream::parRun())
+    {
+        ring_.reset(new latticeRing(lattice));
+        for (label d = 0; d < 3; ++d) sh_[d] = ring_->sh(d);
+        VcellE_.assign(ring_->nCellsE(), 0.0);
+        pgE_.assign(ring_->nCellsE(), 0.0);
+        KgE_.assign(ring_->nCellsE(), 0.0);
+        keyE_.assign(ring_->nCellsE(), GREAT);
+        for (label d = 0; d < 3; ++d)
+        {
+            VfaceE_[d].assign(ring_->nFacesE(d), 0.0);
+        }
+        // The neighbour cell of each ghost slot in the grown box
+        phiSlot_.assign(lat_.nGhostSlots(), 0.0);
+        slotCellE_.assign(lat_.nGhostSlots(), -1);
+        for (label d = 0; d < 3; ++d)
+        {
+            if (!lat_.active(d)) continue;
+            const label st = lat_.stride(d);
+            for (const auto& s : lat_.segments(d))
+            {
+                if (s.lowGhost >= 0)
+                {
+                    slotCellE_[s.lowGhost] =
+                        ring_->cellOf(s.start) - ring_->strideE(d);
+                }
+                if (s.highGhost >= 0)
+                {
+                    slotCellE_[s.highGhost] =
+                        ring_->cellOf(s.start + (s.length - 1)*st)
+                      + ring_->strideE(d);
+                }
+            }
+        }
+    }
     build();
 }
 
@@ -147,6 +208,12 @@ void Foam::solidLattice::deposit
     const UList<scalar>& Kgp
 )
 {
+    if (ring_.valid())
+    {
+        depositParallel(P, pgp, Kgp);
+        reflectiveShares();
+        return;
+    }
     const label nLat = lat_.nLattice();
 
     // Reset what the previous deposit touched
@@ -251,6 +318,12 @@ void Foam::solidLattice::deposit
         }
     }
 
+    reflectiveShares();
+}
+
+
+void Foam::solidLattice::reflectiveShares()
+{
     // (3.2.3) reflective share of each face
     const scalar Vc = lat_.cellVolume();
     const label D = lat_.nDims();

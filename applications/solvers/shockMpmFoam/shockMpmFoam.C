@@ -32,7 +32,16 @@ Description
     evaluation and the time step is the minimum over the ranks, so the
     explicit stepper gives the serial fields bit for bit; the semiImplicit
     stepper's pressure system couples across processor faces and its CG
-    sums over the ranks, so it agrees with serial to round-off.
+    sums over the ranks, so it agrees with serial to round-off.  With
+    solids (2D, 3D) the coupled step runs across the ranks too: the MPM
+    grid is the rank's cells and a halo (mpmParallel), the solid's
+    deposits on the lattice are summed over the ranks, the coupled
+    system's solid part over the ranks holding a node; particles move to
+    the rank of their new cell, every rank writes its cloud (with J^g), so
+    reconstructPar merges it and a parallel run restarts from any written
+    time.  The results agree with serial to round-off
+    (tests/cases/csmpmParallel).  A 1D coupled case and a processor
+    directory without its cloud stop with a FatalError.
 
 Usage
     shockMpmFoam [-case dir] [-parallel]

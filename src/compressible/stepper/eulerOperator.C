@@ -200,7 +200,10 @@ void Foam::eulerOperator::computeFluxes(const gasState& U, bool advective)
         {
             for (const auto& s : mesh_.segments(d))
             {
-                for (label m = 1; m < s.length; ++m)
+                // (processor faces too: the coupling's faces across ranks)
+                const label m0 = s.lowGhost >= 0 ? 0 : 1;
+                const label m1 = s.highGhost >= 0 ? s.length + 1 : s.length;
+                for (label m = m0; m < m1; ++m)
                 {
                     blendFace(d, s.faceOffset + m);
                 }
@@ -228,8 +231,8 @@ void Foam::eulerOperator::firstOrderFaces
         firstOrderFace(line, s, m + 1);
         if (open_[d])
         {
-            if (m > 0) blendFace(d, f0);
-            if (m + 1 < s.length) blendFace(d, f0 + 1);
+            if (m > 0 || s.lowGhost >= 0) blendFace(d, f0);
+            if (m + 1 < s.length || s.highGhost >= 0) blendFace(d, f0 + 1);
         }
         if (m == 0 && bcs_[s.lowPatch].kindOf() == gasBoundary::kind::wall)
         {

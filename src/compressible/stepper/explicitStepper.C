@@ -36,7 +36,9 @@ Foam::scalar Foam::gasSteppers::explicitStepper::stableDeltaT
 {
     limiter = "|u|+c";
     const scalar rate = acousticRate(U, speed);
-    return rate > 0 ? CFL/rate : GREAT;
+    // (a rank whose gas is at rest but for round-off, e.g. denormal
+    // velocities ahead of a shock, would overflow CFL/rate)
+    return rate > CFL/GREAT ? CFL/rate : GREAT;
 }
 
 

@@ -155,7 +155,9 @@ Foam::scalar Foam::gasSteppers::semiImplicitStepper::stableDeltaT
         rate = std::max(rate, ru + std::sqrt(rp));
     }
     limiter = rate > 1.0001*rateU ? "|u|+pressure" : "|u|";
-    return rate > 0 ? CFL/rate : GREAT;
+    // (a rank whose gas is at rest but for round-off, e.g. denormal
+    // velocities ahead of a shock, would overflow CFL/rate)
+    return rate > CFL/GREAT ? CFL/rate : GREAT;
 }
 
 

@@ -1,0 +1,344 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "csmpmStepper.H"
+#include "PstreamReduceOps.H"
+#include <unordered_map>
+#include <algorithm>
+#include <cmath>
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+// A cell the solid mostly covers (open fraction o < 1/2) keeps only the gas
+// its open volume holds at the state of its most open neighbour (o_n > o):
+// content o/o_n times the neighbour's; the rest of its mass, momentum and
+// energy (or the deficit) goes to that neighbour.  Conservative, and
+// positive (the neighbour keeps (1 - o/o_n) of its content plus the cell's),
+// so that the few gas a covered cell holds cannot be driven to a negative
+// pressure by the pressure work around it
+void Foam::csmpmStepper::mergeCoveredCells(gasState& out) const
+{
+    const double theta = 0.5;
+    const auto& cellAt = mesh_.cellAt();
+    const label nLat = mesh_.nLattice();
+    for (const label i : phiCells_)
+    {
+        const double o = max(1 - phiCell_[i], gasVolumeMin_);
+        if (!(o < theta)) continue;
+        label best = -1;
+        double oBest = o;
+        for (label d = 0; d < 3; ++d)
+        {
+            if (!mesh_.active(d)) continue;
+            const label st = mesh_.stride(d);
+            const label f = mesh_.lowFaceOf(d)[i];
+            const label nb[2] = {i - st, i + st};
+            for (label h = 0; h < 2; ++h)
+            {
+                const label j = nb[h];
+                if (j < 0 || j >= nLat || cellAt[j] < 0) continue;
+                // a neighbour along this line (not across a line's end)
+                const label fj = mesh_.lowFaceOf(d)[j];
+                if (fj != f - 1 && fj != f + 1) continue;
+                const double oj = max(1 - phiCell_[j], gasVolumeMin_);
+                if (oj > oBest)
+                {
+                    oBest = oj;
+                    best = j;
+                }
+            }
+        }
+        if (best < 0) continue;
+        const double r = o/oBest;
+        for (int c = 0; c < 5; ++c)
+        {
+            const double keep = r*out.q[c][best];
+            out.q[c][best] += out.q[c][i] - keep;
+            out.q[c][i] = keep;
+        }
+    }
+}
+
+// A cell next to the solid (it or a face neighbour has a solid fraction)
+// whose gas the pressure step left inadmissible (a near-vacuum behind a
+// body in a strong flow, a sliver of gas in a mixed cell) is pooled with
+// the face neighbour holding the most gas: their summed mass, momentum and
+// energy shared by their open volumes.  Conservative; the step fails as
+// before if the pooled state is inadmissible too.  Returns the cells
+// repaired
+Foam::label Foam::csmpmStepper::repairNearSolid(gasState& out) const
+{
+    label nRepaired = 0;
+    const auto& cellAt = mesh_.cellAt();
+    const label nLat = mesh_.nLattice();
+    for (const label c : phiCells_)
+    {
+        // the solid cell and its face neighbours
+        label around[7] = {c, -1, -1, -1, -1, -1, -1};
+        label nA = 1;
+        for (label d = 0; d < 3; ++d)
+        {
+            if (!mesh_.active(d)) continue;
+            const label st = mesh_.stride(d);
+            const label f = mesh_.lowFaceOf(d)[c];
+            for (const label j : {c - st, c + st})
+            {
+                if (j < 0 || j >= nLat || cellAt[j] < 0) continue;
+                const label fj = mesh_.lowFaceOf(d)[j];
+                if (fj == f - 1 || fj == f + 1) around[nA++] = j;
+            }
+        }
+        for (label a = 0; a < nA; ++a)
+        {
+            const label i = around[a];
+            if (out.admissible(i, gamma_)) continue;
+            label best = -1;
+            double mBest = 0;
+            for (label d = 0; d < 3; ++d)
+            {
+                if (!mesh_.active(d)) continue;
+                const label st = mesh_.stride(d);
+                const label f = mesh_.lowFaceOf(d)[i];
+                for (const label j : {i - st, i + st})
+                {
+                    if (j < 0 || j >= nLat || cellAt[j] < 0) continue;
+                    const label fj = mesh_.lowFaceOf(d)[j];
+                    if (fj != f - 1 && fj != f + 1) continue;
+                    if (out.q[0][j] > mBest && out.admissible(j, gamma_))
+                    {
+                        mBest = out.q[0][j];
+                        best = j;
+                    }
+                }
+            }
+            if (best < 0) continue;
+            const double oi = max(1 - phiCell_[i], gasVolumeMin_);
+            const double ob = max(1 - phiCell_[best], gasVolumeMin_);
+            for (int k = 0; k < 5; ++k)
+            {
+                const double sum = out.q[k][i] + out.q[k][best];
+                out.q[k][i] = sum*oi/(oi + ob);
+                out.q[k][best] = sum*ob/(oi + ob);
+            }
+            ++nRepaired;
+        }
+    }
+    return nRepaired;
+}
+
+
+// mergeCoveredCells and repairNearSolid of the serial run, across the ranks:
+// every rank sends the cells within two face steps of the solid's deposits
+// it sees (its own and its ring's) and its cells at processor faces (the
+// cells a merge or a repair reads or changes: a covered cell, its
+// neighbours, theirs); every rank runs the serial algorithm on the union in
+// the serial order (the touched cells by their first particle) and keeps
+// its own cells' results
+Foam::label Foam::csmpmStepper::mergeAndRepairParallel(gasState& out) const
+{
+    const latticeRing& ring = lattice_.ring();
+    const std::vector<double>& VE = lattice_.VcellE();
+    const std::vector<double>& keyE = lattice_.keyE();
+    const label nLat = mesh_.nLattice();
+    label sh[3], n[3], nE[3];
+    for (label d = 0; d < 3; ++d)
+    {
+        sh[d] = ring.sh(d);
+        n[d] = mesh_.n(d);
+        nE[d] = ring.nE(d);
+    }
+
+    // The rank's cells to send
+    std::vector<char> mark(nLat, 0);
+    const label r2 = 2;
+    for (label k = 0; k < nE[2]; ++k)
+    for (label j = 0; j < nE[1]; ++j)
+    for (label i = 0; i < nE[0]; ++i)
+    {
+        if (!(VE[ring.cellE(i, j, k)] > 0)) continue;
+        const label lo[3] = {i - r2*sh[0], j - r2*sh[1], k - r2*sh[2]};
+        const label hi[3] = {i + r2*sh[0], j + r2*sh[1], k + r2*sh[2]};
+        for (label c = max(lo[2], sh[2]); c <= min(hi[2], sh[2] + n[2] - 1); ++c)
+        for (label b = max(lo[1], sh[1]); b <= min(hi[1], sh[1] + n[1] - 1); ++b)
+        for (label a = max(lo[0], sh[0]); a <= min(hi[0], sh[0] + n[0] - 1); ++a)
+        {
+            if (mag(a - i) + mag(b - j) + mag(c - k) > r2) continue;
+            mark[(a - sh[0]) + n[0]*((b - sh[1]) + n[1]*(c - sh[2]))] = 1;
+        }
+    }
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!mesh_.active(d)) continue;
+        for (label i = 0; i < nLat; ++i)
+        {
+            if (slotLo_[d][i] >= 0 || slotHi_[d][i] >= 0) mark[i] = 1;
+        }
+    }
+    DynamicList<scalar> mine;
+    DynamicList<label> sent;
+    for (label i = 0; i < nLat; ++i)
+    {
+        if (!mark[i]) continue;
+        label c[3];
+        mesh_.ijk(i, c[0], c[1], c[2]);
+        const label e = ring.cellOf(i);
+        mine.append(scalar(ring.globalOf(c[0] + sh[0], c[1] + sh[1], c[2] + sh[2])));
+        mine.append(lattice_.phi(i));
+        mine.append(keyE[e]);
+        for (int q = 0; q < 5; ++q) mine.append(out.q[q][i]);
+        sent.append(i);
+    }
+    List<List<scalar>> all(Pstream::nProcs());
+    all[Pstream::myProcNo()].transfer(mine);
+    Pstream::gatherList(all);
+    Pstream::scatterList(all);
+
+    // The union
+    label nU = 0;
+    for (const List<scalar>& l : all) nU += l.size()/8;
+    std::vector<label> gOf(nU);
+    std::vector<double> phi(nU), key(nU);
+    gasState U;
+    U.resize(nU);
+    std::unordered_map<label, label> at;
+    at.reserve(2*nU);
+    label mineStart = 0;
+    {
+        label u = 0;
+        forAll(all, r)
+        {
+            if (r == Pstream::myProcNo()) mineStart = u;
+            const List<scalar>& l = all[r];
+            for (label k = 0; k + 7 < l.size(); k += 8, ++u)
+            {
+                gOf[u] = label(std::llround(l[k]));
+                phi[u] = l[k + 1];
+                key[u] = l[k + 2];
+                for (int q = 0; q < 5; ++q) U.q[q][u] = l[k + 3 + q];
+                at[gOf[u]] = u;
+            }
+        }
+    }
+    std::vector<std::pair<double, label>> order;
+    for (label u = 0; u < nU; ++u)
+    {
+        if (key[u] < 1e300) order.emplace_back(key[u], u);
+    }
+    std::sort(order.begin(), order.end());
+
+    const label N[3] = {ring.N(0), ring.N(1), ring.N(2)};
+    const label gStride[3] = {1, N[0], N[0]*N[1]};
+    // The face neighbour of u along d (h: 0 low, 1 high); -1 at the
+    // lattice's end; FatalError if the union lacks it
+    auto nbr = [&](label u, label d, label h) -> label
+    {
+        const label g = gOf[u];
+        const label c = (g/gStride[d]) % N[d];
+        if ((h == 0 && c == 0) || (h == 1 && c == N[d] - 1)) return -1;
+        const auto it = at.find(g + (h ? 1 : -1)*gStride[d]);
+        if (it == at.end())
+        {
+            FatalErrorInFunction
+                << "The cell " << g + (h ? 1 : -1)*gStride[d] << " next to"
+                << " the solid is missing from the gathered cells"
+                << exit(FatalError);
+        }
+        return it->second;
+    };
+    auto open = [&](label u) { return max(1 - phi[u], gasVolumeMin_); };
+
+    // mergeCoveredCells
+    const double theta = 0.5;
+    for (const auto& ou : order)
+    {
+        const label i = ou.second;
+        const double o = open(i);
+        if (!(o < theta)) continue;
+        label best = -1;
+        double oBest = o;
+        for (label d = 0; d < 3; ++d)
+        {
+            if (!mesh_.active(d)) continue;
+            for (label h = 0; h < 2; ++h)
+            {
+                const label j = nbr(i, d, h);
+                if (j < 0) continue;
+                const double oj = open(j);
+                if (oj > oBest)
+                {
+                    oBest = oj;
+                    best = j;
+                }
+            }
+        }
+        if (best < 0) continue;
+        const double r = o/oBest;
+        for (int c = 0; c < 5; ++c)
+        {
+            const double keep = r*U.q[c][best];
+            U.q[c][best] += U.q[c][i] - keep;
+            U.q[c][i] = keep;
+        }
+    }
+
+    // repairNearSolid
+    label nRepaired = 0;
+    for (const auto& ou : order)
+    {
+        const label c = ou.second;
+        label around[7] = {c, -1, -1, -1, -1, -1, -1};
+        label nA = 1;
+        for (label d = 0; d < 3; ++d)
+        {
+            if (!mesh_.active(d)) continue;
+            for (label h = 0; h < 2; ++h)
+            {
+                const label j = nbr(c, d, h);
+                if (j >= 0) around[nA++] = j;
+            }
+        }
+        for (label a = 0; a < nA; ++a)
+        {
+            const label i = around[a];
+            if (U.admissible(i, gamma_)) continue;
+            label best = -1;
+            double mBest = 0;
+            for (label d = 0; d < 3; ++d)
+            {
+                if (!mesh_.active(d)) continue;
+                for (label h = 0; h < 2; ++h)
+                {
+                    const label j = nbr(i, d, h);
+                    if (j < 0) continue;
+                    if (U.q[0][j] > mBest && U.admissible(j, gamma_))
+                    {
+                        mBest = U.q[0][j];
+                        best = j;
+                    }
+                }
+            }
+            if (best < 0) continue;
+            const double oi = open(i);
+            const double ob = open(best);
+            for (label k = 0; k < 5; ++k)
+            {
+                const double sum = U.q[k][i] + U.q[k][best];
+                U.q[k][i] = sum*oi/(oi + ob);
+                U.q[k][best] = sum*ob/(oi + ob);
+            }
+            ++nRepaired;
+        }
+    }
+
+    // The rank's own cells back
+    forAll(sent, k)
+    {
+        for (int q = 0; q < 5; ++q) out.q[q][sent[k]] = U.q[q][mineStart + k];
+    }
+    return nRepaired;
+}
+
+
+// ************************************************************************* //
