@@ -10,19 +10,25 @@ Writes NAME_schlieren.png: the numerical schlieren exp(-15 |grad rho| /
 max |grad rho|) of the chosen times (default: four spread over the run)
 with the particles in red (cells outside the mesh are grey), and
 NAME_solid.dat: per written time the number of fragments (particles
-joined when closer than 1.5 cells, union-find on a hash of cells), the
+joined when closer than 1.5 cells: connected components of the
+neighbour graph), the
 solid's mass, momentum and centre, the largest particle speed, and per
 fragment of two or more particles its mass, centre and velocity.
-The last time's lines are printed.
+The last time's lines are printed.  A 3D case is drawn in its mid-plane
+z = const (the cells there, the particles within a cell of it); its
+fragments and totals are the whole cloud's.
 """
 import os, re, sys
 import numpy as np
+from scipy.spatial import cKDTree
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 
 case, name = sys.argv[1], sys.argv[2]
-opts = dict(zip(sys.argv[3::2], sys.argv[4::2]))
+opts = {k.lstrip('-'): v for k, v in zip(sys.argv[3::2], sys.argv[4::2])}
 num = r'[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?'
 dx = float(open(f'{case}/caseInfo').read().split()[2])
 
@@ -58,30 +64,21 @@ def cloud(t, field):
 
 def fragments(x, h):
     """Labels of the particles' clusters: joined when closer than h."""
-    n = len(x)
-    parent = list(range(n))
-
-    def find(i):
-        while parent[i] != i:
-            parent[i] = parent[parent[i]]
-            i = parent[i]
-        return i
-    cells = {}
-    for i, p in enumerate(x):
-        cells.setdefault((int(p[0]//h), int(p[1]//h)), []).append(i)
-    for (ci, cj), members in cells.items():
-        for di in (-1, 0, 1):
-            for dj in (-1, 0, 1):
-                for j in cells.get((ci + di, cj + dj), ()):
-                    for i in members:
-                        if i < j and np.sum((x[i] - x[j])**2) < h*h:
-                            a, b = find(i), find(j)
-                            if a != b:
-                                parent[a] = b
-    return np.array([find(i) for i in range(n)])
+    pairs = cKDTree(x).query_pairs(h, output_type='ndarray')
+    g = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])),
+                   shape=(len(x), len(x)))
+    return connected_components(g, directed=False)[1]
 
 
 C = internal('0', 'C')
+zs = np.unique(np.floor(C[:, 2]/dx + 1e-9).astype(int))
+is3D = len(zs) > 1
+if is3D:                        # the cells of the mid-plane
+    zMid = (zs[len(zs)//2] + 0.5)*dx
+    plane = np.abs(C[:, 2] - zMid) < 0.5*dx
+else:
+    plane = np.ones(len(C), dtype=bool)
+C = C[plane]
 lo = C[:, :2].min(axis=0) - 0.5*dx
 I = np.rint((C[:, 0] - lo[0])/dx - 0.5).astype(int)
 J = np.rint((C[:, 1] - lo[1])/dx - 0.5).astype(int)
@@ -137,7 +134,7 @@ fig, ax = plt.subplots(n if wide else 1, 1 if wide else n, squeeze=False,
                        figsize=(9, 2.6*n*(box[3] - box[2])/(box[1] - box[0])
                                 + 0.5*n) if wide else (3.2*n, 3.4))
 for a, t in zip(ax.flat, pick):
-    r = np.full((ny, nx), np.nan); r[J, I] = internal(t, 'rho')
+    r = np.full((ny, nx), np.nan); r[J, I] = internal(t, 'rho')[plane]
     gy, gx = np.gradient(r, dx)
     g = np.hypot(gx, gy)
     S = np.exp(-15*g/np.nanmax(g))
@@ -145,6 +142,8 @@ for a, t in zip(ax.flat, pick):
     a.imshow(np.ma.masked_invalid(S), origin='lower', extent=ext, cmap=cm,
              vmin=0, vmax=1, interpolation='nearest')
     x = cloud(t, 'positions')
+    if len(x) and is3D:
+        x = x[np.abs(x[:, 2] - zMid) < dx]
     if len(x):
         a.plot(x[:, 0], x[:, 1], '.', ms=0.8, color='tab:red')
     a.set_xlim(box[0], box[1]); a.set_ylim(box[2], box[3])
