@@ -131,8 +131,8 @@ box = [float(v) for v in opts['box'].split(',')] if 'box' in opts else ext
 wide = (box[1] - box[0]) > 1.5*(box[3] - box[2])
 n = len(pick)
 fig, ax = plt.subplots(n if wide else 1, 1 if wide else n, squeeze=False,
-                       figsize=(9, 2.6*n*(box[3] - box[2])/(box[1] - box[0])
-                                + 0.5*n) if wide else (3.2*n, 3.4))
+                       figsize=(9, n*(8.6*(box[3] - box[2])/(box[1] - box[0])
+                                     + 0.4)) if wide else (3.2*n, 3.4))
 for a, t in zip(ax.flat, pick):
     r = np.full((ny, nx), np.nan); r[J, I] = internal(t, 'rho')[plane]
     gy, gx = np.gradient(r, dx)
