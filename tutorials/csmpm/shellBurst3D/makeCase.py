@@ -1,0 +1,92 @@
+#!/usr/bin/python3
+"""Write the 3D shell-burst smoke test (after the pumpkins of the
+dissertation's Fig. 3.13) into directory D: python3 makeCase.py D [n=32]
+[tEnd=0.06] [write=0.02] [pIn=50] [rhoIn=7] [rhoS=10] [E=500] [nu=0.25]
+[rIn=0.2] [rOut=0.27] [material=neoHookean] [yield=20]
+
+The unit cube, n^3 cells, `open` (outlets) all round; gas rho 1.4, p 1
+outside, hot compressed gas (rhoIn, pIn) inside a spherical shell of radii
+rIn and rOut centred at (0.5, 0.5, 0.5), its cells (topoSet: sphereToCell
+rOut less sphereToCell rIn) filled with 2 x 2 x 2 particles each;
+neoHookean (elastic) or henckyJ2 (plastic, yield stress 'yield': Table
+3.1's plastic pumpkin).  A smoke test of the coupling in 3D: the coarse
+lattice makes the shell two cells thick.
+"""
+import os, sys
+a = dict(n=32, tEnd=0.06, write=0.02, pIn=50.0, rhoIn=7.0, rhoS=10.0,
+         E=500.0, nu=0.25, rIn=0.2, rOut=0.27, material='neoHookean',
+         **{'yield': 20.0})
+d = sys.argv[1]
+for kv in sys.argv[2:]:
+    k, v = kv.split('=')
+    a[k] = type(a[k])(v)
+n = int(a['n']); dx = 1.0/n
+H = 'FoamFile { version 2.0; format ascii; class %s; object %s; }\n'
+for sub in ('0', 'constant', 'system'):
+    os.makedirs(os.path.join(d, sub), exist_ok=True)
+def w(path, cls, obj, body):
+    with open(os.path.join(d, path), 'w') as f:
+        f.write(H % (cls, obj) + body)
+w('system/blockMeshDict', 'dictionary', 'blockMeshDict', f'''
+vertices ( (0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 1) (1 0 1) (1 1 1) (0 1 1) );
+blocks ( hex (0 1 2 3 4 5 6 7) ({n} {n} {n}) simpleGrading (1 1 1) );
+boundary
+(
+    open {{ type patch; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2)
+                              (0 3 2 1) (4 5 6 7)); }}
+);
+''')
+w('system/topoSetDict', 'dictionary', 'topoSetDict', f'''
+actions
+(
+    {{ name shell; type cellSet; action new; source sphereToCell;
+       origin (0.5 0.5 0.5); radius {a["rOut"]}; }}
+    {{ name shell; type cellSet; action delete; source sphereToCell;
+       origin (0.5 0.5 0.5); radius {a["rIn"]}; }}
+    {{ name shell; type cellZoneSet; action new; source setToCellZone; set shell; }}
+    {{ name hot; type cellSet; action new; source sphereToCell;
+       origin (0.5 0.5 0.5); radius {a["rIn"]}; }}
+);
+''')
+w('system/setFieldsDict', 'dictionary', 'setFieldsDict', f'''
+defaultFieldValues ( volScalarFieldValue p 1 volScalarFieldValue rho 1.4 );
+regions ( cellToCell {{ set hot; fieldValues ( volScalarFieldValue p {a["pIn"]}
+    volScalarFieldValue rho {a["rhoIn"]} ); }} );
+''')
+w('system/controlDict', 'dictionary', 'controlDict', f'''
+application shockMpmFoam; startFrom latestTime; startTime 0; stopAt endTime;
+endTime {a["tEnd"]}; deltaT 1e-6; writeControl adjustable;
+writeInterval {a["write"]}; purgeWrite 0; writeFormat ascii;
+writePrecision 10; writeCompression off; timeFormat general;
+timePrecision 6; runTimeModifiable false;
+''')
+w('system/fvSchemes', 'dictionary', 'fvSchemes', '''
+ddtSchemes { default Euler; } gradSchemes { default Gauss linear; }
+divSchemes { default none; } laplacianSchemes { default none; }
+interpolationSchemes { default linear; } snGradSchemes { default corrected; }
+''')
+w('system/fvSolution', 'dictionary', 'fvSolution', '\n')
+w('system/shockMpmDict', 'dictionary', 'shockMpmDict', '''
+gas { stepper semiImplicit; scheme WENO5; timeIntegration RK3; CFL 0.5; }
+boundaries { open { type outlet; } }
+coupling { order couplingFirst; ghostInit ambient; }
+''')
+w('constant/thermophysicalProperties', 'dictionary',
+  'thermophysicalProperties', 'gamma 1.4; R 1;\n')
+mat = f'type {a["material"]}; rho {a["rhoS"]}; E {a["E"]}; nu {a["nu"]};'
+if a['material'] == 'henckyJ2':
+    mat += f' kappaP {a["yield"]}; kappaR {a["yield"]}; eta 0;'
+w('constant/mpmProperties', 'dictionary', 'mpmProperties', f'''
+kernel bspline2; transfer APIC; CFL 0.5;
+materials {{ shell {{ {mat} }} }}
+''')
+w('system/mpmSetParticlesDict', 'dictionary', 'mpmSetParticlesDict', '''
+regions ( shell { type cellZone; zone shell; material shell; perCell 2; } );
+''')
+with open(os.path.join(d, 'caseInfo'), 'w') as f:
+    f.write(f'{n} {n} {dx!r}\n')
+for name, cls, dim, val in (('p', 'volScalarField', '[1 -1 -2 0 0 0 0]', 'uniform 1'),
+                             ('rho', 'volScalarField', '[1 -3 0 0 0 0 0]', 'uniform 1.4'),
+                             ('U', 'volVectorField', '[0 1 -1 0 0 0 0]', 'uniform (0 0 0)')):
+    w('0/' + name, cls, name, f'dimensions {dim};\ninternalField {val};\n'
+      'boundaryField { open { type zeroGradient; } }\n')
