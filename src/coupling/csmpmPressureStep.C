@@ -431,6 +431,8 @@ bool Foam::csmpmStepper::pressureStep
 
     // (3.21) gas face velocities; the solid's velocity at each face
     for (int c = 0; c < 5; ++c) out.q[c] = Ustar_.q[c];
+    swept_.resize(out.q[0].size());
+    for (const label i : cells_) swept_[i] = 0;
     for (label d = 0; d < 3; ++d)
     {
         if (!mesh_.active(d)) continue;
@@ -547,17 +549,13 @@ bool Foam::csmpmStepper::pressureStep
             // solid); equal to -dt (p_{f+1} - p_f)/dx where nothing blocks
             m[i] += dt*(J[f]*(1 - shareL_[f]) + J[f + 1]*shareL_[f + 1])/dx;
             const double a0 = open[f], a1 = open[f + 1];
-            // The gas's own work on the passable shares (a flux), and the
-            // solid's on the gas of this cell: the cell's pressure times
-            // the solid volume the faces' reflective shares bring in (the
-            // pressure's work on the solid's nodes in (3.36) at their new
-            // velocities, turned round; none where the solid crosses a
-            // cell rigidly)
+            // The gas's own work on the passable shares (a flux); the
+            // solid volume the faces' reflective shares bring in, for the
+            // solid's work on the gas of this cell (below)
             const double F0 = pF[f]*a0*uF[f];
             const double F1 = pF[f + 1]*a1*uF[f + 1];
-            const double Ws =
-                p_[unknownOf_[i]]*((1 - a0)*usF[f] - (1 - a1)*usF[f + 1]);
-            E[i] -= dt*(F1 - F0 - Ws)/dx;
+            E[i] -= dt*(F1 - F0)/dx;
+            swept_[i] += dt*((1 - a0)*usF[f] - (1 - a1)*usF[f + 1])/dx;
             if (gravity_)
             {
                 // The work of gravity on the face's passable share, split
@@ -567,6 +565,42 @@ bool Foam::csmpmStepper::pressureStep
                         a0*rhoF_[d][f]*uF[f]*(1 - shareL_[f])
                       + a1*rhoF_[d][f + 1]*uF[f + 1]*shareL_[f + 1]
                     );
+            }
+        }
+    }
+
+    // The solid's work on the gas of each cell: the cell's pressure times
+    // the volume the solid brings in (the pressure's work on the solid's
+    // nodes in (3.36) at their new velocities, turned round; none where
+    // the solid crosses a cell rigidly).  Where the solid leaves a cell
+    // the gas expands into the volume it frees: the isentropic change of
+    // its internal energy over the open volume's growth, -p_gas dV for a
+    // small step and never more than the gas holds (the linear -p dV with
+    // the shared pressure would empty a nearly covered cell)
+    {
+        std::vector<double>& E = out.q[4];
+        for (const label i : cells_)
+        {
+            const double W = swept_[i];
+            if (W == 0) continue;
+            const double p = p_[unknownOf_[i]];
+            if (W > 0)
+            {
+                E[i] += p*W;
+            }
+            else
+            {
+                // The gas's own internal energy (in a mostly covered cell
+                // far less than the shared pressure's p (1 - phi)/(gamma-1))
+                const double open = max(1 - lattice_.phi(i), gasVolumeMin_);
+                const double eInt = E[i] - 0.5*
+                (
+                    sqr(out.q[1][i]) + sqr(out.q[2][i]) + sqr(out.q[3][i])
+                )/out.q[0][i];
+                if (eInt > 0)
+                {
+                    E[i] += eInt*(std::pow(1 - W/open, 1 - gamma_) - 1);
+                }
             }
         }
     }
