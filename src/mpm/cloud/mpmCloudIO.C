@@ -130,6 +130,10 @@ void Foam::mpmCloudIO::write
     writeField(mesh, cloudName, "epsilonP", P.epsilonP);
     writeField(mesh, cloudName, "Jp", P.Jp);
     writeField(mesh, cloudName, "id", P.id);
+    if (P.hasContact)
+    {
+        writeField(mesh, cloudName, "fContact", P.fContact);
+    }
 }
 
 
@@ -198,6 +202,10 @@ bool Foam::mpmCloudIO::read
     readField(mesh, cloudName, "material", n, P.material);
     readFieldOrDefault(mesh, cloudName, "epsilonP", n, scalar(0), P.epsilonP);
     readFieldOrDefault(mesh, cloudName, "Jp", n, scalar(1), P.Jp);
+    readFieldOrDefault
+    (
+        mesh, cloudName, "fContact", n, vector(Zero), P.fContact
+    );
     const bool ids =
         fieldIO(mesh, cloudName, "id", IOobject::MUST_READ)
        .typeHeaderOk<IOField<label>>(false);

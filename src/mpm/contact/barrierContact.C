@@ -1,0 +1,762 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "barrierContact.H"
+#include "dictionaryChecks.H"
+#include "polyMesh.H"
+#include "emptyPolyPatch.H"
+#include "processorPolyPatch.H"
+#include "Pstream.H"
+#include "boundBox.H"
+#include "SubField.H"
+#include "ops.H"
+#include <algorithm>
+#include <chrono>
+
+// * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
+
+Foam::vector Foam::barrierContact::nearestOnSegment
+(
+    const vector& a,
+    const vector& b,
+    const vector& x
+)
+{
+    const vector ab = b - a;
+    const scalar l2 = magSqr(ab);
+    if (l2 <= 0) return a;
+    const scalar t = min(max(((x - a) & ab)/l2, scalar(0)), scalar(1));
+    return a + t*ab;
+}
+
+
+Foam::vector Foam::barrierContact::nearestOnTriangle
+(
+    const vector& a,
+    const vector& b,
+    const vector& c,
+    const vector& x
+)
+{
+    // The Voronoi regions of the triangle's vertices, edges and interior,
+    // told apart by the projections of x - a, x - b, x - c on the edges
+    const vector ab = b - a;
+    const vector ac = c - a;
+
+    const vector ax = x - a;
+    const scalar d1 = ab & ax;
+    const scalar d2 = ac & ax;
+    if (d1 <= 0 && d2 <= 0) return a;
+
+    const vector bx = x - b;
+    const scalar d3 = ab & bx;
+    const scalar d4 = ac & bx;
+    if (d3 >= 0 && d4 <= d3) return b;
+
+    // Edge ab
+    const scalar vc = d1*d4 - d3*d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0)
+    {
+        return a + (d1/(d1 - d3))*ab;
+    }
+
+    const vector cx = x - c;
+    const scalar d5 = ab & cx;
+    const scalar d6 = ac & cx;
+    if (d6 >= 0 && d5 <= d6) return c;
+
+    // Edge ac
+    const scalar vb = d5*d2 - d1*d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0)
+    {
+        return a + (d2/(d2 - d6))*ac;
+    }
+
+    // Edge bc
+    const scalar va = d3*d6 - d5*d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    {
+        const scalar w = (d4 - d3)/((d4 - d3) + (d5 - d6));
+        return b + w*(c - b);
+    }
+
+    // Interior: barycentric coordinates from the areas
+    const scalar sum = va + vb + vc;
+    if (!(mag(sum) > 0)) return a;     // degenerate triangle
+    return a + (vb/sum)*ab + (vc/sum)*ac;
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::vector Foam::barrierContact::nearest(const face& f, const vector& x) const
+{
+    return f.segment
+        ? nearestOnSegment(f.a, f.b, x)
+        : nearestOnTriangle(f.a, f.b, f.c, x);
+}
+
+
+void Foam::barrierContact::readSettings
+(
+    const dictionary& dict,
+    const scalar hMean
+)
+{
+    using namespace dictionaryChecks;
+
+    if (mesh_.dim() < 2)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Barrier contact (" << dict.name() << ") needs a 2D or 3D"
+            << " mesh; this one is " << mesh_.dim() << "D"
+            << exit(FatalIOError);
+    }
+    dHat_ = getPositive(dict, "dHat", 0.25*hMean);
+    stiffness_ = getPositive(dict, "stiffness", 1);
+    friction_ = getAsOrDefault<scalar>
+    (
+        dict, "friction", 0, "a finite number >= 0"
+    );
+    if (!(friction_ >= 0) || !std::isfinite(friction_))
+    {
+        badEntry(dict, "friction", Foam::name(friction_), "a finite number >= 0");
+    }
+    epsV_ = getPositive(dict, "epsV", 1e-3);
+}
+
+
+void Foam::barrierContact::buildCellFaces()
+{
+    // Faces ordered by patch (stable), so a cell's list is too
+    {
+        labelList order(faces_.size());
+        forAll(order, i) order[i] = i;
+        std::stable_sort
+        (
+            order.begin(), order.end(),
+            [this](const label i, const label j)
+            {
+                return faces_[i].patch < faces_[j].patch;
+            }
+        );
+        List<face> sorted(faces_.size());
+        forAll(order, i) sorted[i] = faces_[order[i]];
+        faces_.transfer(sorted);
+    }
+
+    const label nCells = mesh_.nCells();
+    const List<vector>& xv = mesh_.vertices();
+    const labelList& cv = mesh_.cellVertices();
+
+    // Each cell's centre and radius; the search radius dHat + 2 R covers
+    // any point of the cell moved by up to R
+    List<vector> centre(nCells);
+    scalarList radius(nCells);
+    scalar rMax = 0;
+    for (label c = 0; c < nCells; ++c)
+    {
+        vector xc(Zero);
+        const label n = mesh_.cellEnd(c) - mesh_.cellBegin(c);
+        for (label i = mesh_.cellBegin(c); i < mesh_.cellEnd(c); ++i)
+        {
+            xc += mesh_.inPlane(xv[cv[i]]);
+        }
+        xc /= scalar(n);
+        scalar R = 0;
+        for (label i = mesh_.cellBegin(c); i < mesh_.cellEnd(c); ++i)
+        {
+            R = max(R, mag(mesh_.inPlane(xv[cv[i]]) - xc));
+        }
+        centre[c] = xc;
+        radius[c] = dHat_ + 2*R;
+        rMax = max(rMax, radius[c]);
+    }
+
+    cellStart_.setSize(nCells + 1);
+    cellStart_ = 0;
+    cellFaces_.clear();
+    if (faces_.empty()) return;
+
+    // Bins over the faces' box grown by the largest search radius
+    boundBox bb;
+    for (const face& f : faces_)
+    {
+        bb.add(f.a); bb.add(f.b); bb.add(f.c);
+    }
+    bb.min() -= vector::uniform(rMax);
+    bb.max() += vector::uniform(rMax);
+    for (label d = 0; d < 3; ++d)
+    {
+        if (mesh_.offAxes()(d, d) > 0)
+        {
+            bb.min()[d] = -1;
+            bb.max()[d] = 1;
+        }
+    }
+    const label maxBins = 64;
+    FixedList<label, 3> nb;
+    vector binSize;
+    for (label d = 0; d < 3; ++d)
+    {
+        const scalar ext = bb.max()[d] - bb.min()[d];
+        nb[d] = max(label(1), min(maxBins, label(ext/rMax)));
+        binSize[d] = ext/nb[d];
+    }
+    auto binRange = [&](const vector& lo, const vector& hi, FixedList<label, 6>& r)
+    {
+        for (label d = 0; d < 3; ++d)
+        {
+            r[d] = max(label(0), min(nb[d] - 1, label((lo[d] - bb.min()[d])/binSize[d])));
+            r[3 + d] = max(label(0), min(nb[d] - 1, label((hi[d] - bb.min()[d])/binSize[d])));
+        }
+    };
+
+    const label nBins = nb[0]*nb[1]*nb[2];
+    labelList binStart(nBins + 1, Zero);
+    FixedList<label, 6> r;
+    for (label pass = 0; pass < 2; ++pass)
+    {
+        labelList fill;
+        if (pass == 1)
+        {
+            for (label b = 0; b < nBins; ++b) binStart[b + 1] += binStart[b];
+            fill = labelList(SubList<label>(binStart, nBins));
+        }
+        labelList binFaces(pass == 1 ? binStart[nBins] : 0);
+        forAll(faces_, fi)
+        {
+            const face& f = faces_[fi];
+            vector lo = min(min(f.a, f.b), f.c);
+            vector hi = max(max(f.a, f.b), f.c);
+            binRange(lo, hi, r);
+            for (label i = r[0]; i <= r[3]; ++i)
+            for (label j = r[1]; j <= r[4]; ++j)
+            for (label k = r[2]; k <= r[5]; ++k)
+            {
+                const label b = i + nb[0]*(j + nb[1]*k);
+                if (pass == 0) ++binStart[b + 1];
+                else binFaces[fill[b]++] = fi;
+            }
+        }
+        if (pass == 0) continue;
+
+        // Each cell: the faces of the bins its search ball meets, within
+        // the ball (a face seen in several bins is taken once)
+        labelList stamp(faces_.size(), label(-1));
+        DynamicList<label> list;
+        DynamicList<label> found;
+        for (label c = 0; c < nCells; ++c)
+        {
+            const vector& xc = centre[c];
+            const scalar R = radius[c];
+            binRange(xc - vector::uniform(R), xc + vector::uniform(R), r);
+            found.clear();
+            for (label i = r[0]; i <= r[3]; ++i)
+            for (label j = r[1]; j <= r[4]; ++j)
+            for (label k = r[2]; k <= r[5]; ++k)
+            {
+                const label b = i + nb[0]*(j + nb[1]*k);
+                for (label q = binStart[b]; q < binStart[b + 1]; ++q)
+                {
+                    const label fi = binFaces[q];
+                    if (stamp[fi] == c) continue;
+                    stamp[fi] = c;
+                    if (magSqr(nearest(faces_[fi], xc) - xc) <= R*R)
+                    {
+                        found.append(fi);
+                    }
+                }
+            }
+            std::sort(found.begin(), found.end());
+            list.append(found);
+            cellStart_[c + 1] = list.size();
+        }
+        cellFaces_.transfer(list);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
+
+Foam::barrierContact::barrierContact
+(
+    const polyMesh& mesh,
+    const mpmMeshView& view,
+    const dictionary& dict,
+    const mpmParallel* par
+)
+:
+    mesh_(view),
+    dHat_(0),
+    stiffness_(1),
+    friction_(0),
+    epsV_(1e-3),
+    minDistance_(GREAT),
+    nWithin_(0),
+    nExamined_(0),
+    forceTime_(0),
+    nForceCalls_(0)
+{
+    using namespace dictionaryChecks;
+    const polyBoundaryMesh& pbm = mesh.boundaryMesh();
+
+    // The patches, checked
+    wordList allowed;
+    for (const polyPatch& pp : pbm)
+    {
+        if (!isA<emptyPolyPatch>(pp) && !isA<processorPolyPatch>(pp))
+        {
+            allowed.append(pp.name());
+        }
+    }
+    OStringStream allowedText;
+    allowedText << "a list of boundary patches of the mesh (not empty or"
+        << " processor): " << allowed;
+    patchNames_ = getAs<wordList>(dict, "patches", allowedText.str());
+    if (patchNames_.empty())
+    {
+        badEntry(dict, "patches", "()", allowedText.str());
+    }
+    labelList patchIDs(patchNames_.size());
+    forAll(patchNames_, k)
+    {
+        const label id = pbm.findPatchID(patchNames_[k]);
+        if
+        (
+            id < 0 || isA<emptyPolyPatch>(pbm[id])
+         || isA<processorPolyPatch>(pbm[id])
+        )
+        {
+            badEntry(dict, "patches", patchNames_[k], allowedText.str());
+        }
+        patchIDs[k] = id;
+    }
+
+    // The mean vertex size (dHat's default)
+    scalar hSum = 0;
+    label hCount = view.nVertices();
+    for (const scalar h : view.vertexSize()) hSum += h;
+    if (par)
+    {
+        reduce(hSum, sumOp<scalar>());
+        reduce(hCount, sumOp<label>());
+    }
+    readSettings(dict, hCount > 0 ? hSum/hCount : 0);
+
+    // This rank's faces: a, b, c, outward normal per face, and the patch
+    const bool twoD = (view.dim() == 2);
+    const pointField& pts = mesh.points();
+    List<vector> local;
+    labelList localPatch;
+    DynamicList<vector> dl;
+    DynamicList<label> dp;
+    forAll(patchIDs, k)
+    {
+        const polyPatch& pp = pbm[patchIDs[k]];
+        const vectorField Sf(pp.faceAreas());
+        forAll(pp, i)
+        {
+            const Foam::face& f = pp[i];
+            const vector n = Sf[i]/max(mag(Sf[i]), VSMALL);
+            if (twoD)
+            {
+                // The face's trace in the solution plane: its two points
+                // farthest apart once projected
+                scalar best = -1;
+                vector a(Zero), b(Zero);
+                forAll(f, m)
+                {
+                    for (label q = m + 1; q < f.size(); ++q)
+                    {
+                        const vector pm = view.inPlane(pts[f[m]]);
+                        const vector pq = view.inPlane(pts[f[q]]);
+                        if (magSqr(pq - pm) > best)
+                        {
+                            best = magSqr(pq - pm);
+                            a = pm;
+                            b = pq;
+                        }
+                    }
+                }
+                dl.append(a); dl.append(b); dl.append(b);
+                dl.append(view.inPlane(n));
+                dp.append(k);
+            }
+            else
+            {
+                for (label m = 1; m + 1 < f.size(); ++m)
+                {
+                    dl.append(pts[f[0]]);
+                    dl.append(pts[f[m]]);
+                    dl.append(pts[f[m + 1]]);
+                    dl.append(n);
+                    dp.append(k);
+                }
+            }
+        }
+    }
+    local.transfer(dl);
+    localPatch.transfer(dp);
+
+    if (par)
+    {
+        // Every rank's faces on every rank
+        List<List<vector>> allPts(Pstream::nProcs());
+        List<labelList> allPatch(Pstream::nProcs());
+        allPts[Pstream::myProcNo()] = local;
+        allPatch[Pstream::myProcNo()] = localPatch;
+        Pstream::gatherList(allPts);
+        Pstream::scatterList(allPts);
+        Pstream::gatherList(allPatch);
+        Pstream::scatterList(allPatch);
+        local.clear();
+        localPatch.clear();
+        DynamicList<vector> al;
+        DynamicList<label> ap;
+        forAll(allPts, r)
+        {
+            al.append(allPts[r]);
+            ap.append(allPatch[r]);
+        }
+        local.transfer(al);
+        localPatch.transfer(ap);
+    }
+
+    faces_.setSize(localPatch.size());
+    forAll(faces_, i)
+    {
+        face& f = faces_[i];
+        f.a = local[4*i];
+        f.b = local[4*i + 1];
+        f.c = local[4*i + 2];
+        f.nOut = local[4*i + 3];
+        f.patch = localPatch[i];
+        f.segment = twoD;
+    }
+    buildCellFaces();
+
+    Info<< "Barrier contact on patches " << patchNames_ << ": "
+        << faces_.size() << (twoD ? " segments" : " triangles") << ", dHat "
+        << dHat_ << " m, stiffness " << stiffness_ << " (kappa_p = stiffness"
+        << " E V0_p/dHat^2), friction " << friction_ << ", epsV " << epsV_
+        << " m/s; " << returnReduce(nContactCells(), sumOp<label>())
+        << " cells within reach" << nl;
+}
+
+
+Foam::barrierContact::barrierContact
+(
+    const mpmMeshView& view,
+    const List<face>& faces,
+    const wordList& patchNames,
+    const dictionary& dict
+)
+:
+    mesh_(view),
+    patchNames_(patchNames),
+    faces_(faces),
+    dHat_(0),
+    stiffness_(1),
+    friction_(0),
+    epsV_(1e-3),
+    minDistance_(GREAT),
+    nWithin_(0),
+    nExamined_(0),
+    forceTime_(0),
+    nForceCalls_(0)
+{
+    scalar hSum = 0;
+    for (const scalar h : view.vertexSize()) hSum += h;
+    readSettings(dict, view.nVertices() ? hSum/view.nVertices() : 0);
+    buildCellFaces();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::label Foam::barrierContact::nContactCells() const
+{
+    label n = 0;
+    for (label c = 0; c < mesh_.nCells(); ++c)
+    {
+        if (nearWall(c)) ++n;
+    }
+    return n;
+}
+
+
+void Foam::barrierContact::forces
+(
+    const mpmParticles& P,
+    const kernelWeights& kw,
+    UList<vector>& f
+)
+{
+    const auto t0 = std::chrono::steady_clock::now();
+    nWithin_ = 0;
+    nExamined_ = 0;
+    const scalar dHat = dHat_;
+    const scalar kScale = stiffness_/(dHat*dHat);
+    const scalar dFloor = 1e-12*dHat;
+    const label nP = P.size();
+    const bool friction = friction_ > 0;
+    if (friction)
+    {
+        lambda_.setSize(nP);
+        if (bound_.size() != mesh_.nVertices())
+        {
+            bound_.setSize(mesh_.nVertices(), Zero);
+            normal_.setSize(mesh_.nVertices(), Zero);
+            fFriction_.setSize(mesh_.nVertices(), Zero);
+        }
+    }
+
+    for (label p = 0; p < nP; ++p)
+    {
+        const label c = P.cell[p];
+        f[p] = Zero;
+        if (friction) lambda_[p] = 0;
+        if (!nearWall(c)) continue;
+        ++nExamined_;
+
+        const vector x = mesh_.inPlane(P.x[p]);
+        const scalar kappa = kScale*E_[P.material[p]]*P.V0[p];
+        vector fp(Zero);
+        scalar lambdaSum = 0;
+
+        label j = cellStart_[c];
+        const label end = cellStart_[c + 1];
+        while (j < end)
+        {
+            // The nearest face of this patch
+            const label patch = faces_[cellFaces_[j]].patch;
+            scalar d2 = GREAT;
+            vector xc(Zero);
+            label best = -1;
+            for (; j < end && faces_[cellFaces_[j]].patch == patch; ++j)
+            {
+                const vector q = nearest(faces_[cellFaces_[j]], x);
+                const scalar s = magSqr(x - q);
+                if (s < d2)
+                {
+                    d2 = s;
+                    xc = q;
+                    best = cellFaces_[j];
+                }
+            }
+            const scalar d = std::sqrt(d2);
+            minDistance_ = min(minDistance_, d);
+            if (d >= dHat) continue;
+
+            // (IPC barrier) f_n = -kappa b'(d) n
+            const vector n = d > dFloor ? (x - xc)/d : -faces_[best].nOut;
+            const scalar lambda = -kappa*barrierD1(max(d, dFloor), dHat);
+            fp += lambda*n;
+            lambdaSum += lambda;
+        }
+        if (lambdaSum > 0) ++nWithin_;
+        f[p] = fp;
+
+        // The friction bound mu lambda and the normal at the vertices
+        if (friction && lambdaSum > 0)
+        {
+            lambda_[p] = lambdaSum;
+            const scalar muLambda = friction_*lambdaSum;
+            for (label k = kw.start[p]; k < kw.start[p + 1]; ++k)
+            {
+                const scalar w = max(kw.w[k], scalar(0));
+                if (w <= 0) continue;
+                const label i = kw.vertex[k];
+                if (bound_[i] == 0) touched_.append(i);
+                bound_[i] += w*muLambda;
+                normal_[i] += w*fp;
+            }
+        }
+    }
+
+    forceTime_ += std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - t0
+    ).count();
+    ++nForceCalls_;
+}
+
+
+void Foam::barrierContact::friction
+(
+    const UList<scalar>& mass,
+    const UList<label>& vertices,
+    const scalar dt,
+    UList<vector>& velocity
+)
+{
+    if (friction_ <= 0) return;
+    const auto t0 = std::chrono::steady_clock::now();
+    const scalar epsV = epsV_;
+    for (const label i : vertices)
+    {
+        const scalar B = bound_[i];
+        const scalar m = mass[i];
+        fFriction_[i] = Zero;
+        if (!(B > 0) || !(m > VSMALL)) continue;
+        const scalar nMag = mag(normal_[i]);
+        if (!(nMag > VSMALL)) continue;
+        const vector n = normal_[i]/nMag;
+        const vector& v = velocity[i];
+        const vector vt = v - (v & n)*n;
+        const scalar ut = mag(vt);
+        if (!(ut > VSMALL)) continue;
+
+        // Backward Euler for the smoothed Coulomb friction with the lagged
+        // bound B = sum w mu lambda: m (u - ut) = -dt B f1(u/epsV), u in
+        // [0, ut]: sliding (u >= epsV) or the root of the quadratic
+        const scalar k = dt*B;
+        scalar u = ut - k/m;
+        if (u < epsV)
+        {
+            const scalar b = m + 2*k/epsV;
+            const scalar disc = max(b*b - 4*k*m*ut/(epsV*epsV), scalar(0));
+            u = 2*m*ut/(b + std::sqrt(disc));
+        }
+        u = min(max(u, scalar(0)), ut);
+        const vector dv = (u/ut - 1)*vt;
+        velocity[i] += dv;
+        fFriction_[i] = (m/dt)*dv;
+    }
+    forceTime_ += std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - t0
+    ).count();
+}
+
+
+void Foam::barrierContact::frictionShare
+(
+    const mpmParticles& P,
+    const kernelWeights& kw,
+    UList<vector>& f
+)
+{
+    if (friction_ <= 0) return;
+    const label nP = P.size();
+    for (label p = 0; p < nP; ++p)
+    {
+        const scalar muLambda = friction_*lambda_[p];
+        if (muLambda <= 0) continue;
+        vector ft(Zero);
+        for (label k = kw.start[p]; k < kw.start[p + 1]; ++k)
+        {
+            const scalar w = max(kw.w[k], scalar(0));
+            const label i = kw.vertex[k];
+            if (w > 0 && bound_[i] > 0)
+            {
+                ft += (w*muLambda/bound_[i])*fFriction_[i];
+            }
+        }
+        f[p] += ft;
+    }
+}
+
+
+void Foam::barrierContact::resetVertices(const UList<label>& vertices)
+{
+    for (const label i : vertices)
+    {
+        bound_[i] = 0;
+        normal_[i] = Zero;
+        fFriction_[i] = Zero;
+    }
+    touched_.clear();
+}
+
+
+Foam::scalar Foam::barrierContact::maxDeltaT
+(
+    const mpmParticles& P,
+    const scalar CFL
+) const
+{
+    scalar dt = GREAT;
+    const scalar dHat = dHat_;
+    const scalar kScale = stiffness_/(dHat*dHat);
+    const scalar dFloor = 1e-12*dHat;
+    const label nP = P.size();
+
+    for (label p = 0; p < nP; ++p)
+    {
+        const label c = P.cell[p];
+        if (c < 0 || !nearWall(c)) continue;
+        const vector x = mesh_.inPlane(P.x[p]);
+        const vector v = mesh_.inPlane(P.v[p]);
+        const scalar kappa = kScale*E_[P.material[p]]*P.V0[p];
+
+        label j = cellStart_[c];
+        const label end = cellStart_[c + 1];
+        while (j < end)
+        {
+            const label patch = faces_[cellFaces_[j]].patch;
+            scalar d2 = GREAT;
+            vector xc(Zero);
+            for (; j < end && faces_[cellFaces_[j]].patch == patch; ++j)
+            {
+                const vector q = nearest(faces_[cellFaces_[j]], x);
+                const scalar s = magSqr(x - q);
+                if (s < d2) { d2 = s; xc = q; }
+            }
+            const scalar d = max(std::sqrt(d2), dFloor);
+            if (d < dHat)
+            {
+                // The barrier spring kappa b''(d) on the particle's mass
+                const scalar k = kappa*barrierD2(d, dHat);
+                if (k > 0) dt = min(dt, CFL*std::sqrt(P.m[p]/k));
+            }
+            // Step filter: at most half the distance towards the wall
+            const scalar vn = -(v & (x - xc))/d;
+            if (vn > 0) dt = min(dt, 0.5*d/vn);
+        }
+    }
+    return dt;
+}
+
+
+Foam::label Foam::barrierContact::check
+(
+    const mpmParticles& P,
+    const UList<vector>& vGrid,
+    const scalar dt,
+    scalar& dist
+) const
+{
+    const label nP = P.size();
+    for (label p = 0; p < nP; ++p)
+    {
+        const label c = P.cell[p];
+        if (!nearWall(c)) continue;
+        const vector xNew = P.x[p] + dt*vGrid[p];
+        if (mesh_.findCell(xNew, c) < 0)
+        {
+            dist = -1;
+            return p;
+        }
+        const vector x = mesh_.inPlane(xNew);
+        scalar d2 = GREAT;
+        for (label j = cellStart_[c]; j < cellStart_[c + 1]; ++j)
+        {
+            d2 = min(d2, magSqr(x - nearest(faces_[cellFaces_[j]], x)));
+        }
+        const scalar d = std::sqrt(d2);
+        minDistance_ = min(minDistance_, d);
+        if (!(d > 0))
+        {
+            dist = d;
+            return p;
+        }
+    }
+    return -1;
+}
+
+
+// ************************************************************************* //
