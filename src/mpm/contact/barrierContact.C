@@ -151,8 +151,8 @@ void Foam::barrierContact::buildCellFaces()
     const List<vector>& xv = mesh_.vertices();
     const labelList& cv = mesh_.cellVertices();
 
-    // Each cell's centre and radius; the search radius dHat + 2 R covers
-    // any point of the cell moved by up to R
+    // Each cell's centre and radius R; the search radius dHat + R covers
+    // every point of the cell
     List<vector> centre(nCells);
     scalarList radius(nCells);
     scalar rMax = 0;
@@ -171,12 +171,15 @@ void Foam::barrierContact::buildCellFaces()
             R = max(R, mag(mesh_.inPlane(xv[cv[i]]) - xc));
         }
         centre[c] = xc;
-        radius[c] = dHat_ + 2*R;
+        radius[c] = dHat_ + R;
         rMax = max(rMax, radius[c]);
     }
 
     cellStart_.setSize(nCells + 1);
     cellStart_ = 0;
+    cellCentre_ = centre;
+    cellDistance_.setSize(nCells);
+    cellDistance_ = GREAT;
     cellFaces_.clear();
     if (faces_.empty()) return;
 
@@ -271,6 +274,12 @@ void Foam::barrierContact::buildCellFaces()
                 }
             }
             std::sort(found.begin(), found.end());
+            scalar dc2 = GREAT;
+            for (const label fi : found)
+            {
+                dc2 = min(dc2, magSqr(nearest(faces_[fi], xc) - xc));
+            }
+            cellDistance_[c] = std::sqrt(dc2);
             list.append(found);
             cellStart_[c + 1] = list.size();
         }
@@ -503,6 +512,10 @@ void Foam::barrierContact::forces
     const scalar dFloor = 1e-12*dHat;
     const label nP = P.size();
     const bool friction = friction_ > 0;
+    dStart_.setSize(nP);
+    nStart_.setSize(nP);
+    disp_.setSize(nP);
+    cacheValid_ = true;
     if (friction)
     {
         lambda_.setSize(nP);
@@ -518,11 +531,23 @@ void Foam::barrierContact::forces
     {
         const label c = P.cell[p];
         f[p] = Zero;
+        dStart_[p] = GREAT;
+        disp_[p] = 0;
         if (friction) lambda_[p] = 0;
         if (!nearWall(c)) continue;
+
+        // Farther than dHat from every face if the cell's centre is far
+        // enough: d >= d(centre) - |x - centre| (a lower bound kept)
+        const vector x = mesh_.inPlane(P.x[p]);
+        const scalar dLow = cellDistance_[c] - mag(x - cellCentre_[c]);
+        if (dLow >= dHat)
+        {
+            dStart_[p] = dLow;
+            nStart_[p] = Zero;
+            continue;
+        }
         ++nExamined_;
 
-        const vector x = mesh_.inPlane(P.x[p]);
         const scalar kappa = kScale*E_[P.material[p]]*P.V0[p];
         vector fp(Zero);
         scalar lambdaSum = 0;
@@ -549,10 +574,15 @@ void Foam::barrierContact::forces
             }
             const scalar d = std::sqrt(d2);
             minDistance_ = min(minDistance_, d);
+            const vector n = d > dFloor ? (x - xc)/d : -faces_[best].nOut;
+            if (d < dStart_[p])
+            {
+                dStart_[p] = d;
+                nStart_[p] = n;
+            }
             if (d >= dHat) continue;
 
             // (IPC barrier) f_n = -kappa b'(d) n
-            const vector n = d > dFloor ? (x - xc)/d : -faces_[best].nOut;
             const scalar lambda = -kappa*barrierD1(max(d, dFloor), dHat);
             fp += lambda*n;
             lambdaSum += lambda;
@@ -685,6 +715,26 @@ Foam::scalar Foam::barrierContact::maxDeltaT
     const scalar dFloor = 1e-12*dHat;
     const label nP = P.size();
 
+    // The last step's distances less the step's displacement (a lower
+    // bound of the distance now), when they belong to these particles
+    if (cacheValid_ && dStart_.size() == nP)
+    {
+        for (label p = 0; p < nP; ++p)
+        {
+            if (dStart_[p] >= GREAT) continue;
+            const scalar d = max(dStart_[p] - disp_[p], dFloor);
+            if (d < dHat)
+            {
+                const scalar kappa = kScale*E_[P.material[p]]*P.V0[p];
+                const scalar k = kappa*barrierD2(d, dHat);
+                if (k > 0) dt = min(dt, CFL*std::sqrt(P.m[p]/k));
+            }
+            const scalar vn = -(P.v[p] & nStart_[p]);
+            if (vn > 0) dt = min(dt, 0.5*d/vn);
+        }
+        return dt;
+    }
+
     for (label p = 0; p < nP; ++p)
     {
         const label c = P.cell[p];
@@ -731,10 +781,19 @@ Foam::label Foam::barrierContact::check
 ) const
 {
     const label nP = P.size();
+    const bool cached = cacheValid_ && dStart_.size() == nP;
     for (label p = 0; p < nP; ++p)
     {
         const label c = P.cell[p];
         if (!nearWall(c)) continue;
+        const scalar move = dt*mag(mesh_.inPlane(vGrid[p]));
+        if (cached)
+        {
+            disp_[p] = move;
+            // d(x + dx) >= d(x) - |dx|: only a particle that moves at least
+            // its distance can reach the wall
+            if (dStart_[p] > move) continue;
+        }
         const vector xNew = P.x[p] + dt*vGrid[p];
         if (mesh_.findCell(xNew, c) < 0)
         {

@@ -395,6 +395,7 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
     P.hasContact = (contact_ != nullptr);
     P.fContact.setSize(P.size(), Zero);
     materialStart_ = P.sortByMaterial(materials_.size());
+    if (contact_) contact_->invalidate();
     forAll(P.x, p)
     {
         // A cloud edited by hand or written by a broken run: values
@@ -935,6 +936,7 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
         if (sent || P.size() != before - sent)
         {
             materialStart_ = P.sortByMaterial(materials_.size());
+            if (contact_) contact_->invalidate();
         }
     }
 
