@@ -201,6 +201,16 @@ TEST(barrierContact, forceAndFrictionOnAFloor)
     EXPECT_EQ(contact.nWithin(), 1);
     EXPECT_NEAR(contact.minDistance(), d, 1e-12);
 
+    // The step check: a displacement shorter than d passes, one through
+    // the wall is refused (out of the mesh: dist -1)
+    {
+        scalar dist = 0;
+        List<vector> vg(1, vector(0.3, -1, 0));
+        EXPECT_EQ(contact.check(P, vg, 0.5*d, dist), -1);
+        EXPECT_EQ(contact.check(P, vg, 2*d, dist), 0);
+        EXPECT_EQ(dist, -1);
+    }
+
     // The vertices' friction bounds sum to mu lambda
     scalar Bsum = 0;
     for (const label i : contact.touched()) Bsum += contact.vertexBound()[i];
