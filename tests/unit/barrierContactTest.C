@@ -257,7 +257,13 @@ TEST(barrierContact, forceAndFrictionOnAFloor)
 TEST(barrierContact, badEntries)
 {
     auto mesh = testMeshes::plane(2, false, 0.0);
-    List<barrierContact::face> faces(0);
+    List<barrierContact::face> faces(1);
+    faces[0].a = vector(0, 0, 0);
+    faces[0].b = vector(1, 0, 0);
+    faces[0].c = faces[0].b;
+    faces[0].nOut = vector(0, -1, 0);
+    faces[0].patch = 0;
+    faces[0].segment = true;
     FatalIOError.throwExceptions(true);
     for (const char* text : {"dHat 0;", "dHat -1;", "friction -0.1;", "stiffness 0;", "epsV 0;"})
     {

@@ -89,6 +89,19 @@ Foam::vector Foam::barrierContact::nearestOnTriangle
 }
 
 
+Foam::scalar Foam::barrierContact::meanEdge(const UList<face>& faces)
+{
+    scalar sum = 0;
+    for (const face& f : faces)
+    {
+        sum += f.segment
+            ? mag(f.b - f.a)
+            : (mag(f.b - f.a) + mag(f.c - f.b) + mag(f.a - f.c))/3;
+    }
+    return faces.size() ? sum/faces.size() : 0;
+}
+
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::vector Foam::barrierContact::nearest(const face& f, const vector& x) const
@@ -113,6 +126,14 @@ void Foam::barrierContact::readSettings
             << "Barrier contact (" << dict.name() << ") needs a 2D or 3D"
             << " mesh; this one is " << mesh_.dim() << "D"
             << exit(FatalIOError);
+    }
+    if (!(hMean > 0) && !dict.found("dHat", keyType::LITERAL))
+    {
+        badEntry
+        (
+            dict, "patches", entryText(dict, "patches"),
+            "patches with faces (these have none, so dHat has no default)"
+        );
     }
     dHat_ = getPositive(dict, "dHat", 0.25*hMean);
     stiffness_ = getPositive(dict, "stiffness", 1);
@@ -344,17 +365,6 @@ Foam::barrierContact::barrierContact
         patchIDs[k] = id;
     }
 
-    // The mean vertex size (dHat's default)
-    scalar hSum = 0;
-    label hCount = view.nVertices();
-    for (const scalar h : view.vertexSize()) hSum += h;
-    if (par)
-    {
-        reduce(hSum, sumOp<scalar>());
-        reduce(hCount, sumOp<label>());
-    }
-    readSettings(dict, hCount > 0 ? hSum/hCount : 0);
-
     // This rank's faces: a, b, c, outward normal per face, and the patch
     const bool twoD = (view.dim() == 2);
     const pointField& pts = mesh.points();
@@ -445,6 +455,7 @@ Foam::barrierContact::barrierContact
         f.patch = localPatch[i];
         f.segment = twoD;
     }
+    readSettings(dict, meanEdge(faces_));
     buildCellFaces();
 
     Info<< "Barrier contact on patches " << patchNames_ << ": "
@@ -477,9 +488,7 @@ Foam::barrierContact::barrierContact
     forceTime_(0),
     nForceCalls_(0)
 {
-    scalar hSum = 0;
-    for (const scalar h : view.vertexSize()) hSum += h;
-    readSettings(dict, view.nVertices() ? hSum/view.nVertices() : 0);
+    readSettings(dict, meanEdge(faces_));
     buildCellFaces();
 }
 

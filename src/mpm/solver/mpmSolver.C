@@ -327,6 +327,7 @@ Foam::mpmSolver::mpmSolver
     grid_(mesh.nVertices()),
     contact_(nullptr),
     contactDt_(GREAT),
+    contactDtNext_(-1),
     cLast_(0),
     cMaterial_(-1),
     vLast_(0),
@@ -396,6 +397,7 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
     P.fContact.setSize(P.size(), Zero);
     materialStart_ = P.sortByMaterial(materials_.size());
     if (contact_) contact_->invalidate();
+    contactDtNext_ = -1;
     forAll(P.x, p)
     {
         // A cloud edited by hand or written by a broken run: values
@@ -596,7 +598,8 @@ Foam::scalar Foam::mpmSolver::deltaT(const mpmParticles& P) const
     contactDt_ = GREAT;
     if (contact_)
     {
-        scalar dtc = contact_->maxDeltaT(P, CFL_);
+        scalar dtc =
+            contactDtNext_ >= 0 ? contactDtNext_ : contact_->maxDeltaT(P, CFL_);
         if (par_)
         {
             const mpmParallel::exchangeTimer timer;
@@ -925,6 +928,9 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
         P.V[p] = det(P.F[p])*P.Jp[p]*P.V0[p];
     }
     updateStress(P, true);
+
+    // The barrier's limit for the next step, from this step's distances
+    if (contact_) contactDtNext_ = contact_->maxDeltaT(P, CFL_);
 
     // Particles in another rank's cell move there (one outside all cells
     // stays: the next step's locate stops the run, as serial)
