@@ -54,6 +54,7 @@ Usage
 #include "fvCFD.H"
 #include "mpmMeshView.H"
 #include "mpmSolver.H"
+#include "barrierContact.H"
 #include "mpmState.H"
 #include "mpmCloudIO.H"
 #include "dictionaryChecks.H"
@@ -119,6 +120,30 @@ int main(int argc, char *argv[])
 
     mpmSolver solver(view, mpmProperties, boundary);
     if (par.valid()) solver.setParallel(par());
+
+    // Barrier frictional contact with patches (optional)
+    autoPtr<barrierContact> contact;
+    if (mpmProperties.found("contact", keyType::LITERAL))
+    {
+        if (!mpmProperties.isDict("contact"))
+        {
+            dictionaryChecks::badEntry
+            (
+                mpmProperties, "contact",
+                dictionaryChecks::entryText(mpmProperties, "contact"),
+                "a sub-dictionary contact { patches (...); dHat ...;"
+                " friction ...; }"
+            );
+        }
+        contact.reset
+        (
+            new barrierContact
+            (
+                mesh, view, mpmProperties.subDict("contact"), par.get()
+            )
+        );
+        solver.setContact(contact());
+    }
 
     mpmParticles P;
     bool idsRead = true;
@@ -276,8 +301,15 @@ int main(int argc, char *argv[])
                 << runTime.timeName() << "  dt = " << dtUsed
                 << "  active vertices = " << solver.nActive()
                 << "  particles = "
-                << (par.valid() ? returnReduce(P.size(), sumOp<label>()) : P.size())
-                << nl;
+                << (par.valid() ? returnReduce(P.size(), sumOp<label>()) : P.size());
+            if (contact.valid())
+            {
+                Info<< "  within dHat = "
+                    << returnReduce(contact->nWithin(), sumOp<label>())
+                    << "  min distance = "
+                    << returnReduce(contact->minDistance(), minOp<scalar>());
+            }
+            Info<< nl;
         }
 
         if (runTime.writeTime())
@@ -319,6 +351,19 @@ int main(int argc, char *argv[])
             << " in " << steps << " steps (the busiest rank sent "
             << returnReduce(par->nMigratedTotal(), maxOp<label>()) << ")"
             << nl;
+    }
+    if (contact.valid())
+    {
+        const label calls = max(contact->nForceCalls(), label(1));
+        Info<< "Contact: smallest particle-patch distance "
+            << returnReduce(contact->minDistance(), minOp<scalar>())
+            << " m (dHat " << contact->dHat() << " m); force evaluation "
+            << returnReduce(contact->forceTime(), maxOp<scalar>())/calls
+            << " s per step on the busiest rank; at the last step "
+            << returnReduce(contact->nWithin(), sumOp<label>())
+            << " particles within dHat, "
+            << returnReduce(contact->nExamined(), sumOp<label>())
+            << " examined (in cells near the patches)" << nl;
     }
     Info<< "End" << nl << endl;
 

@@ -133,6 +133,10 @@ void Foam::mpmCloudIO::write
     // The positions as computed: the cloud's barycentric coordinates give
     // them back to round-off only, these bit for bit (exact restarts)
     writeField(mesh, cloudName, "x", P.x);
+    if (P.hasContact)
+    {
+        writeField(mesh, cloudName, "fContact", P.fContact);
+    }
 }
 
 
@@ -201,6 +205,10 @@ bool Foam::mpmCloudIO::read
     readField(mesh, cloudName, "material", n, P.material);
     readFieldOrDefault(mesh, cloudName, "epsilonP", n, scalar(0), P.epsilonP);
     readFieldOrDefault(mesh, cloudName, "Jp", n, scalar(1), P.Jp);
+    readFieldOrDefault
+    (
+        mesh, cloudName, "fContact", n, vector(Zero), P.fContact
+    );
     const bool ids =
         fieldIO(mesh, cloudName, "id", IOobject::MUST_READ)
        .typeHeaderOk<IOField<label>>(false);

@@ -187,23 +187,25 @@ bool Foam::mpmParallel::migrate(mpmParticles& P) const
         const mpmParticles& Q = out[q];
         UOPstream os(nbrProcs_[q], pBufs);
         os  << Q.x << Q.v << Q.B << Q.F << Q.m << Q.V0 << Q.V << Q.sigma
-            << Q.psi << Q.epsilonP << Q.Jp << Q.material << Q.cell << Q.id;
+            << Q.psi << Q.epsilonP << Q.Jp << Q.material << Q.cell << Q.id
+            << Q.fContact;
     }
     pBufs.finishedSends();
     forAll(nbrProcs_, q)
     {
         UIPstream is(nbrProcs_[q], pBufs);
         mpmParticles Q;
-        List<vector> x, vel;
+        List<vector> x, vel, fContact;
         List<tensor> B, F;
         scalarList m, V0, V, psi, epsilonP, Jp;
         List<symmTensor> sigma;
         labelList material, cell, id;
         is >> x >> vel >> B >> F >> m >> V0 >> V >> sigma >> psi >> epsilonP
-            >> Jp >> material >> cell >> id;
+            >> Jp >> material >> cell >> id >> fContact;
         Q.x = x; Q.v = vel; Q.B = B; Q.F = F; Q.m = m; Q.V0 = V0; Q.V = V;
         Q.sigma = sigma; Q.psi = psi; Q.epsilonP = epsilonP; Q.Jp = Jp;
         Q.material = material; Q.cell = cell; Q.id = id;
+        Q.fContact = fContact;
         forAll(x, p) P.appendFrom(Q, p);
     }
 

@@ -11,7 +11,7 @@ void Foam::mpmParticles::clear()
 {
     x.clear(); v.clear(); B.clear(); F.clear(); m.clear(); V0.clear();
     V.clear(); sigma.clear(); psi.clear(); epsilonP.clear(); Jp.clear();
-    material.clear(); cell.clear(); id.clear();
+    material.clear(); cell.clear(); id.clear(); fContact.clear();
 }
 
 
@@ -40,6 +40,7 @@ void Foam::mpmParticles::append
     material.append(materialIndex);
     cell.append(celli);
     id.append(id.size());
+    fContact.append(vector::zero);
 }
 
 
@@ -50,6 +51,7 @@ void Foam::mpmParticles::appendFrom(const mpmParticles& Q, const label p)
     sigma.append(Q.sigma[p]); psi.append(Q.psi[p]);
     epsilonP.append(Q.epsilonP[p]); Jp.append(Q.Jp[p]);
     material.append(Q.material[p]); cell.append(Q.cell[p]); id.append(Q.id[p]);
+    fContact.append(Q.fContact[p]);
 }
 
 
@@ -89,6 +91,7 @@ Foam::labelList Foam::mpmParticles::sortByMaterial(const label nMaterials)
     permute(sigma, order); permute(psi, order); permute(epsilonP, order);
     permute(Jp, order); permute(material, order);
     permute(cell, order); permute(id, order);
+    permute(fContact, order);
     return start;
 }
 
@@ -115,6 +118,7 @@ void Foam::mpmParticles::remove(const UList<bool>& marked)
     compact(V, marked); compact(sigma, marked); compact(psi, marked);
     compact(epsilonP, marked); compact(Jp, marked);
     compact(material, marked); compact(cell, marked); compact(id, marked);
+    compact(fContact, marked);
 }
 
 

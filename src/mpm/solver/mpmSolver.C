@@ -5,6 +5,7 @@
 
 #include "mpmSolver.H"
 #include "mpmParallel.H"
+#include "barrierContact.H"
 #include "dictionaryChecks.H"
 #include "Pstream.H"
 #include "ops.H"
@@ -324,6 +325,9 @@ Foam::mpmSolver::mpmSolver
     musl_(false),
     hMin_(*std::min_element(mesh.vertexSize().begin(), mesh.vertexSize().end())),
     grid_(mesh.nVertices()),
+    contact_(nullptr),
+    contactDt_(GREAT),
+    contactDtNext_(-1),
     cLast_(0),
     cMaterial_(-1),
     vLast_(0),
@@ -378,9 +382,22 @@ void Foam::mpmSolver::setParallel(const mpmParallel& par)
 }
 
 
+void Foam::mpmSolver::setContact(barrierContact& contact)
+{
+    contact_ = &contact;
+    scalarList E(materials_.size());
+    forAll(materials_, k) E[k] = materials_[k].E();
+    contact_->setMaterials(E);
+}
+
+
 void Foam::mpmSolver::initialise(mpmParticles& P)
 {
+    P.hasContact = (contact_ != nullptr);
+    P.fContact.setSize(P.size(), Zero);
     materialStart_ = P.sortByMaterial(materials_.size());
+    if (contact_) contact_->invalidate();
+    contactDtNext_ = -1;
     forAll(P.x, p)
     {
         // A cloud edited by hand or written by a broken run: values
@@ -574,7 +591,27 @@ Foam::scalar Foam::mpmSolver::deltaT(const mpmParticles& P) const
     cLast_ = cMax;
     vLast_ = std::sqrt(vMax2);
     const scalar speed = cMax + vLast_;
-    return min(maxDeltaT_, speed > 0 ? CFL_*hMin_/speed : maxDeltaT_);
+    const scalar dt =
+        min(maxDeltaT_, speed > 0 ? CFL_*hMin_/speed : maxDeltaT_);
+
+    // The barrier's spring and step filter (barrierContact)
+    contactDt_ = GREAT;
+    if (contact_)
+    {
+        scalar dtc =
+            contactDtNext_ >= 0 ? contactDtNext_ : contact_->maxDeltaT(P, CFL_);
+        if (par_)
+        {
+            const mpmParallel::exchangeTimer timer;
+            reduce(dtc, minOp<scalar>());
+        }
+        if (dtc < dt)
+        {
+            contactDt_ = dtc;
+            return dtc;
+        }
+    }
+    return dt;
 }
 
 
@@ -592,6 +629,12 @@ Foam::string Foam::mpmSolver::deltaTReason() const
     }
     os  << ", |v|max = " << vLast_ << " m/s";
     if (maxDeltaT_ < 1e30) os << ", maxDeltaT " << maxDeltaT_;
+    if (contactDt_ < GREAT)
+    {
+        os  << "; limited to " << contactDt_ << " s by the barrier contact"
+            << " (CFL sqrt(m_p/(kappa_p b''(d))) and the step filter"
+            << " d/(2 v_n) of the particles near the contact patches)";
+    }
     return os.str();
 }
 
@@ -693,6 +736,26 @@ void Foam::mpmSolver::gridUpdate(const mpmParticles& P, const scalar dt)
             grid_.force[i] = f;
         }
     }
+    // Barrier contact forces (external particle forces, by the weights)
+    if (contact_)
+    {
+        fContact_.setSize(nP);
+        contact_->forces(P, kw_, fContact_);
+        for (label p = 0; p < nP; ++p)
+        {
+            const vector& fc = fContact_[p];
+            if (fc.x() == 0 && fc.y() == 0 && fc.z() == 0) continue;
+            for (label k = kw_.start[p]; k < kw_.start[p + 1]; ++k)
+            {
+                grid_.force[kw_.vertex[k]] += kw_.w[k]*fc;
+            }
+        }
+        if (par_ && contact_->friction() > 0)
+        {
+            par_->sumShared(contact_->vertexBound(), &grid_.isActive);
+            par_->sumShared(contact_->vertexNormal(), &grid_.isActive);
+        }
+    }
     if (par_) par_->sumShared(grid_.force, &grid_.isActive);
 
     // 6. Grid update (2.11) from v~ (v*, or v* with the coupling's change)
@@ -706,6 +769,18 @@ void Foam::mpmSolver::gridUpdate(const mpmParticles& P, const scalar dt)
             grid_.newVelocity[i] =
                 mesh_.inPlane(grid_.newVelocity[i] + (dt/m)*grid_.force[i]);
         }
+    }
+
+    // The contact's friction on v~ (implicit), and its share per particle
+    if (contact_ && contact_->friction() > 0)
+    {
+        // In parallel every active vertex (a shared one may have been
+        // touched on another rank only)
+        const UList<label>& vs =
+            par_ ? UList<label>(grid_.active) : UList<label>(contact_->touched());
+        contact_->friction(grid_.mass, vs, dt, grid_.newVelocity);
+        contact_->frictionShare(P, kw_, fContact_);
+        contact_->resetVertices(vs);
     }
     applyBoundary();
 }
@@ -800,7 +875,25 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
             break;
         }
     }
-    if (!agreed(failure_.empty(), "would invert"))
+    if (contact_ && failure_.empty())
+    {
+        // No particle may reach a contact patch
+        scalar d = 0;
+        const label p = contact_->check(P, vGrid_, dt, d);
+        if (p >= 0)
+        {
+            failure_ = "particle " + Foam::name(p) + " (id "
+                + Foam::name(P.id[p]) + ") at " + Foam::name(P.x[p])
+                + (d < 0
+                    ? string(" would leave the mesh near the contact patches")
+                    : " would reach a contact patch (distance "
+                    + Foam::name(d) + " m)")
+                + ": the barrier did not stop it (dHat "
+                + Foam::name(contact_->dHat()) + " m; a larger stiffness,"
+                " dHat or a smaller CFL may)";
+        }
+    }
+    if (!agreed(failure_.empty(), "would invert or reach a contact patch"))
     {
         if (musl_)
         {
@@ -814,6 +907,10 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
     for (label p = 0; p < nP; ++p)
     {
         P.x[p] += dt*vGrid_[p];
+    }
+    if (contact_)
+    {
+        forAll(fContact_, p) P.fContact[p] = fContact_[p];
     }
 
     // 7. G2P velocities (and B) (USL: after the gradient)
@@ -832,6 +929,9 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
     }
     updateStress(P, true);
 
+    // The barrier's limit for the next step, from this step's distances
+    if (contact_) contactDtNext_ = contact_->maxDeltaT(P, CFL_);
+
     // Particles in another rank's cell move there (one outside all cells
     // stays: the next step's locate stops the run, as serial)
     if (par_)
@@ -842,6 +942,7 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
         if (sent || P.size() != before - sent)
         {
             materialStart_ = P.sortByMaterial(materials_.size());
+            if (contact_) contact_->invalidate();
         }
     }
 
