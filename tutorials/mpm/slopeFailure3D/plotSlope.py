@@ -14,7 +14,8 @@ of the last time drawn on the particles' initial positions; along the
 crest's top layer (initial y > H - 1 m, x < crest) the x-intervals where
 it exceeds 0.5 are the scarps where failure surfaces reached the ground,
 counted when separated by less strained ground (< 0.5) at least 2
-spacings long.  More than one: retrogressive.
+spacings long.  More than one: retrogressive.  The retreat of the
+rearmost such point over the three pictured times is printed too.
 Writes runout.dat, slopeFailure3D_runout.png,
 slopeFailure3D_epsilonP.png, slopeFailure3D_meanStress.png; prints the
 numbers.
@@ -154,6 +155,18 @@ for key, fname, cmap, title in (("eps", "slopeFailure3D_epsilonP.png", "viridis"
     fig.tight_layout()
     fig.savefig(fname, dpi=90)
 
+def backScarp(c, t, thr=0.5):
+    """Initial x of the rearmost crest-top particle with epsilonP > thr"""
+    g = c["g"]
+    top = (c["P0"][:, 1] > g["H"] - 1.0) & (c["P0"][:, 0] < g["crest"])
+    hit = top & (c["snaps"][t]["eps"] > thr)
+    return c["P0"][hit, 0].min() if hit.any() else float("nan")
+
+
+for c in cases:
+    print(f"{c['g']['kernel']}: rearmost crest point with epsilonP > 0.5 (initial x, crest edge at"
+          f" {c['g']['crest']:g} m): " + ", ".join(f"t = {t} s: {backScarp(c, t):.2f} m"
+                                                  for t in c["snaps"]))
 r = [c["runout"][-1] for c in cases]
 for c in cases:
     sc = scarps(c)
