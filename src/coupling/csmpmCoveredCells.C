@@ -9,40 +9,42 @@
 #include <algorithm>
 #include <cmath>
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
-// A cell the solid mostly covers (open fraction o < 1/2) keeps only the gas
-// its open volume holds at the state of its most open neighbour (o_n > o):
-// content o/o_n times the neighbour's; the rest of its mass, momentum and
-// energy (or the deficit) goes to that neighbour.  Conservative, and
-// positive (the neighbour keeps (1 - o/o_n) of its content plus the cell's),
-// so that the few gas a covered cell holds cannot be driven to a negative
-// pressure by the pressure work around it
-void Foam::csmpmStepper::mergeCoveredCells(gasState& out) const
+namespace
 {
+
+// The rules of mergeCoveredCells and repairNearSolid on the cells of U,
+// visited in the order of 'cells'; nbr(u, d, h) is u's face neighbour along
+// direction d (h: 0 low, 1 high), -1 where there is none; open(u) its open
+// fraction.  Shared by the serial run (the lattice's cells) and the
+// parallel one (the cells near the solid gathered from all ranks)
+template<class Nbr, class Open>
+void mergeCovered
+(
+    const std::vector<Foam::label>& cells,
+    const Foam::cartesianMesh& mesh,
+    const Nbr& nbr,
+    const Open& open,
+    Foam::gasState& U
+)
+{
+    using namespace Foam;
     const double theta = 0.5;
-    const auto& cellAt = mesh_.cellAt();
-    const label nLat = mesh_.nLattice();
-    for (const label i : phiCells_)
+    for (const label i : cells)
     {
-        const double o = max(1 - phiCell_[i], gasVolumeMin_);
+        const double o = open(i);
         if (!(o < theta)) continue;
         label best = -1;
         double oBest = o;
         for (label d = 0; d < 3; ++d)
         {
-            if (!mesh_.active(d)) continue;
-            const label st = mesh_.stride(d);
-            const label f = mesh_.lowFaceOf(d)[i];
-            const label nb[2] = {i - st, i + st};
+            if (!mesh.active(d)) continue;
             for (label h = 0; h < 2; ++h)
             {
-                const label j = nb[h];
-                if (j < 0 || j >= nLat || cellAt[j] < 0) continue;
-                // a neighbour along this line (not across a line's end)
-                const label fj = mesh_.lowFaceOf(d)[j];
-                if (fj != f - 1 && fj != f + 1) continue;
-                const double oj = max(1 - phiCell_[j], gasVolumeMin_);
+                const label j = nbr(i, d, h);
+                if (j < 0) continue;
+                const double oj = open(j);
                 if (oj > oBest)
                 {
                     oBest = oj;
@@ -54,12 +56,98 @@ void Foam::csmpmStepper::mergeCoveredCells(gasState& out) const
         const double r = o/oBest;
         for (int c = 0; c < 5; ++c)
         {
-            const double keep = r*out.q[c][best];
-            out.q[c][best] += out.q[c][i] - keep;
-            out.q[c][i] = keep;
+            const double keep = r*U.q[c][best];
+            U.q[c][best] += U.q[c][i] - keep;
+            U.q[c][i] = keep;
         }
     }
 }
+
+
+template<class Nbr, class Open>
+Foam::label repairNear
+(
+    const std::vector<Foam::label>& cells,
+    const Foam::cartesianMesh& mesh,
+    const Nbr& nbr,
+    const Open& open,
+    const double gamma,
+    Foam::gasState& U
+)
+{
+    using namespace Foam;
+    label nRepaired = 0;
+    for (const label c : cells)
+    {
+        // the solid cell and its face neighbours
+        label around[7] = {c, -1, -1, -1, -1, -1, -1};
+        label nA = 1;
+        for (label d = 0; d < 3; ++d)
+        {
+            if (!mesh.active(d)) continue;
+            for (label h = 0; h < 2; ++h)
+            {
+                const label j = nbr(c, d, h);
+                if (j >= 0) around[nA++] = j;
+            }
+        }
+        for (label a = 0; a < nA; ++a)
+        {
+            const label i = around[a];
+            if (U.admissible(i, gamma)) continue;
+            label best = -1;
+            double mBest = 0;
+            for (label d = 0; d < 3; ++d)
+            {
+                if (!mesh.active(d)) continue;
+                for (label h = 0; h < 2; ++h)
+                {
+                    const label j = nbr(i, d, h);
+                    if (j < 0) continue;
+                    if (U.q[0][j] > mBest && U.admissible(j, gamma))
+                    {
+                        mBest = U.q[0][j];
+                        best = j;
+                    }
+                }
+            }
+            if (best < 0) continue;
+            const double oi = open(i);
+            const double ob = open(best);
+            for (label k = 0; k < 5; ++k)
+            {
+                const double sum = U.q[k][i] + U.q[k][best];
+                U.q[k][i] = sum*oi/(oi + ob);
+                U.q[k][best] = sum*ob/(oi + ob);
+            }
+            ++nRepaired;
+        }
+    }
+    return nRepaired;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+// A cell the solid mostly covers (open fraction o < 1/2) keeps only the gas
+// its open volume holds at the state of its most open neighbour (o_n > o):
+// content o/o_n times the neighbour's; the rest of its mass, momentum and
+// energy (or the deficit) goes to that neighbour.  Conservative, and
+// positive (the neighbour keeps (1 - o/o_n) of its content plus the cell's),
+// so that the few gas a covered cell holds cannot be driven to a negative
+// pressure by the pressure work around it
+void Foam::csmpmStepper::mergeCoveredCells(gasState& out) const
+{
+    mergeCovered
+    (
+        phiCells_, mesh_, latticeNeighbour(),
+        [this](label u) { return max(1 - phiCell_[u], gasVolumeMin_); },
+        out
+    );
+}
+
 
 // A cell next to the solid (it or a face neighbour has a solid fraction)
 // whose gas the pressure step left inadmissible (a near-vacuum behind a
@@ -70,62 +158,31 @@ void Foam::csmpmStepper::mergeCoveredCells(gasState& out) const
 // repaired
 Foam::label Foam::csmpmStepper::repairNearSolid(gasState& out) const
 {
-    label nRepaired = 0;
-    const auto& cellAt = mesh_.cellAt();
-    const label nLat = mesh_.nLattice();
-    for (const label c : phiCells_)
+    return repairNear
+    (
+        phiCells_, mesh_, latticeNeighbour(),
+        [this](label u) { return max(1 - phiCell_[u], gasVolumeMin_); },
+        gamma_, out
+    );
+}
+
+
+// The face neighbour of lattice cell i along d (h: 0 low, 1 high) on the
+// same lattice line; -1 at the line's end
+std::function<Foam::label(Foam::label, Foam::label, Foam::label)>
+Foam::csmpmStepper::latticeNeighbour() const
+{
+    return [this](label i, label d, label h) -> label
     {
-        // the solid cell and its face neighbours
-        label around[7] = {c, -1, -1, -1, -1, -1, -1};
-        label nA = 1;
-        for (label d = 0; d < 3; ++d)
+        const label j = h ? i + mesh_.stride(d) : i - mesh_.stride(d);
+        if (j < 0 || j >= mesh_.nLattice() || mesh_.cellAt()[j] < 0)
         {
-            if (!mesh_.active(d)) continue;
-            const label st = mesh_.stride(d);
-            const label f = mesh_.lowFaceOf(d)[c];
-            for (const label j : {c - st, c + st})
-            {
-                if (j < 0 || j >= nLat || cellAt[j] < 0) continue;
-                const label fj = mesh_.lowFaceOf(d)[j];
-                if (fj == f - 1 || fj == f + 1) around[nA++] = j;
-            }
+            return -1;
         }
-        for (label a = 0; a < nA; ++a)
-        {
-            const label i = around[a];
-            if (out.admissible(i, gamma_)) continue;
-            label best = -1;
-            double mBest = 0;
-            for (label d = 0; d < 3; ++d)
-            {
-                if (!mesh_.active(d)) continue;
-                const label st = mesh_.stride(d);
-                const label f = mesh_.lowFaceOf(d)[i];
-                for (const label j : {i - st, i + st})
-                {
-                    if (j < 0 || j >= nLat || cellAt[j] < 0) continue;
-                    const label fj = mesh_.lowFaceOf(d)[j];
-                    if (fj != f - 1 && fj != f + 1) continue;
-                    if (out.q[0][j] > mBest && out.admissible(j, gamma_))
-                    {
-                        mBest = out.q[0][j];
-                        best = j;
-                    }
-                }
-            }
-            if (best < 0) continue;
-            const double oi = max(1 - phiCell_[i], gasVolumeMin_);
-            const double ob = max(1 - phiCell_[best], gasVolumeMin_);
-            for (int k = 0; k < 5; ++k)
-            {
-                const double sum = out.q[k][i] + out.q[k][best];
-                out.q[k][i] = sum*oi/(oi + ob);
-                out.q[k][best] = sum*ob/(oi + ob);
-            }
-            ++nRepaired;
-        }
-    }
-    return nRepaired;
+        const label f = mesh_.lowFaceOf(d)[i];
+        const label fj = mesh_.lowFaceOf(d)[j];
+        return (fj == f - 1 || fj == f + 1) ? j : -1;
+    };
 }
 
 
@@ -249,88 +306,10 @@ Foam::label Foam::csmpmStepper::mergeAndRepairParallel(gasState& out) const
     };
     auto open = [&](label u) { return max(1 - phi[u], gasVolumeMin_); };
 
-    // mergeCoveredCells
-    const double theta = 0.5;
-    for (const auto& ou : order)
-    {
-        const label i = ou.second;
-        const double o = open(i);
-        if (!(o < theta)) continue;
-        label best = -1;
-        double oBest = o;
-        for (label d = 0; d < 3; ++d)
-        {
-            if (!mesh_.active(d)) continue;
-            for (label h = 0; h < 2; ++h)
-            {
-                const label j = nbr(i, d, h);
-                if (j < 0) continue;
-                const double oj = open(j);
-                if (oj > oBest)
-                {
-                    oBest = oj;
-                    best = j;
-                }
-            }
-        }
-        if (best < 0) continue;
-        const double r = o/oBest;
-        for (int c = 0; c < 5; ++c)
-        {
-            const double keep = r*U.q[c][best];
-            U.q[c][best] += U.q[c][i] - keep;
-            U.q[c][i] = keep;
-        }
-    }
-
-    // repairNearSolid
-    label nRepaired = 0;
-    for (const auto& ou : order)
-    {
-        const label c = ou.second;
-        label around[7] = {c, -1, -1, -1, -1, -1, -1};
-        label nA = 1;
-        for (label d = 0; d < 3; ++d)
-        {
-            if (!mesh_.active(d)) continue;
-            for (label h = 0; h < 2; ++h)
-            {
-                const label j = nbr(c, d, h);
-                if (j >= 0) around[nA++] = j;
-            }
-        }
-        for (label a = 0; a < nA; ++a)
-        {
-            const label i = around[a];
-            if (U.admissible(i, gamma_)) continue;
-            label best = -1;
-            double mBest = 0;
-            for (label d = 0; d < 3; ++d)
-            {
-                if (!mesh_.active(d)) continue;
-                for (label h = 0; h < 2; ++h)
-                {
-                    const label j = nbr(i, d, h);
-                    if (j < 0) continue;
-                    if (U.q[0][j] > mBest && U.admissible(j, gamma_))
-                    {
-                        mBest = U.q[0][j];
-                        best = j;
-                    }
-                }
-            }
-            if (best < 0) continue;
-            const double oi = open(i);
-            const double ob = open(best);
-            for (label k = 0; k < 5; ++k)
-            {
-                const double sum = U.q[k][i] + U.q[k][best];
-                U.q[k][i] = sum*oi/(oi + ob);
-                U.q[k][best] = sum*ob/(oi + ob);
-            }
-            ++nRepaired;
-        }
-    }
+    std::vector<label> cells(order.size());
+    for (size_t k = 0; k < order.size(); ++k) cells[k] = order[k].second;
+    mergeCovered(cells, mesh_, nbr, open, U);
+    const label nRepaired = repairNear(cells, mesh_, nbr, open, gamma_, U);
 
     // The rank's own cells back
     forAll(sent, k)

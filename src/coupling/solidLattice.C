@@ -201,22 +201,8 @@ Foam::solidLattice::solidLattice
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::solidLattice::deposit
-(
-    const mpmParticles& P,
-    const UList<scalar>& pgp,
-    const UList<scalar>& Kgp
-)
+void Foam::solidLattice::resetTouched()
 {
-    if (ring_.valid())
-    {
-        depositParallel(P, pgp, Kgp);
-        reflectiveShares();
-        return;
-    }
-    const label nLat = lat_.nLattice();
-
-    // Reset what the previous deposit touched
     for (const label i : touchedCells_)
     {
         Vcell_[i] = 0;
@@ -236,18 +222,27 @@ void Foam::solidLattice::deposit
         }
         touchedFaces_[d].clear();
     }
+}
+
+
+void Foam::solidLattice::deposit
+(
+    const mpmParticles& P,
+    const UList<scalar>& pgp,
+    const UList<scalar>& Kgp
+)
+{
+    if (ring_.valid())
+    {
+        depositParallel(P, pgp, Kgp);
+        reflectiveShares();
+        return;
+    }
+    const label nLat = lat_.nLattice();
+
+    resetTouched();
     const auto& cellAt = lat_.cellAt();
     const label n[3] = {lat_.n(0), lat_.n(1), lat_.n(2)};
-
-    // Linear hats: cells centred at half-integers, clamped at the ends so
-    // that no volume is lost
-    auto hat = [](double s, label nCells, label& i0, double& t)
-    {
-        i0 = label(std::floor(s));
-        t = s - i0;
-        if (i0 < 0) { i0 = 0; t = 0; }
-        if (i0 >= nCells - 1) { i0 = nCells - 1; t = 0; }
-    };
 
     forAll(P.x, p)
     {

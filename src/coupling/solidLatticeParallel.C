@@ -21,25 +21,7 @@ void Foam::solidLattice::depositParallel
     const latticeRing& ring = ring_();
 
     // Reset the lattice's touched cells and faces, and the grown box
-    for (const label i : touchedCells_)
-    {
-        Vcell_[i] = 0;
-        pg_[i] = 0;
-        Kg_[i] = 0;
-        cellMark_[i] = 0;
-    }
-    touchedCells_.clear();
-    for (label d = 0; d < 3; ++d)
-    {
-        for (const label f : touchedFaces_[d])
-        {
-            Vface_[d][f] = 0;
-            R_[d][f] = 0;
-            open_[d][f] = 1;
-            faceMark_[d][f] = 0;
-        }
-        touchedFaces_[d].clear();
-    }
+    resetTouched();
     std::fill(VcellE_.begin(), VcellE_.end(), 0.0);
     std::fill(pgE_.begin(), pgE_.end(), 0.0);
     std::fill(KgE_.begin(), KgE_.end(), 0.0);
@@ -49,9 +31,9 @@ void Foam::solidLattice::depositParallel
         std::fill(VfaceE_[d].begin(), VfaceE_[d].end(), 0.0);
     }
 
-    // Linear hats in the global lattice's coordinates (the serial run's
-    // weights, bit for bit), clamped at its ends as the serial deposit;
-    // then shifted to the grown box
+    // Linear hats (hat) in the global lattice's coordinates (the serial
+    // run's weights, bit for bit), clamped at its ends as the serial
+    // deposit; then shifted to the grown box
     const point& o = ring.globalOrigin();
     label N[3], shift[3];
     for (label e = 0; e < 3; ++e)
@@ -59,14 +41,6 @@ void Foam::solidLattice::depositParallel
         N[e] = ring.N(e);
         shift[e] = ring.off(e) - sh_[e];
     }
-    auto hat = [](double s, label nCells, label& i0, double& t)
-    {
-        i0 = label(std::floor(s));
-        t = s - i0;
-        if (i0 < 0) { i0 = 0; t = 0; }
-        if (i0 >= nCells - 1) { i0 = nCells - 1; t = 0; }
-    };
-
     forAll(P.x, p)
     {
         const scalar Vp = scale_*P.V[p];
