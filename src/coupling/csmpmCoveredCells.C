@@ -45,7 +45,9 @@ void mergeCovered
                 const label j = nbr(i, d, h);
                 if (j < 0) continue;
                 const double oj = open(j);
-                if (oj > oBest)
+                // Ties (to round-off: symmetric bodies, and the sums of
+                // a parallel run) go to the first neighbour in scan order
+                if (oj > oBest*(1 + 1e-10))
                 {
                     oBest = oj;
                     best = j;
@@ -104,7 +106,11 @@ Foam::label repairNear
                 {
                     const label j = nbr(i, d, h);
                     if (j < 0) continue;
-                    if (U.q[0][j] > mBest && U.admissible(j, gamma))
+                    if
+                    (
+                        U.q[0][j] > mBest*(1 + 1e-10)
+                     && U.admissible(j, gamma)
+                    )
                     {
                         mBest = U.q[0][j];
                         best = j;
