@@ -3,7 +3,7 @@
 
     muzzle.py heavy_solid.dat light_solid.dat ...
 
-Reads plotCsmpm.py's NAME_solid.dat of each run (the bullet's centre and
+Reads bin/tools/plotCsmpm.py's NAME_solid.dat of each run (the bullet's centre and
 momentum per written time; its caseInfo next to it gives rhoS, pC, rhoC),
 finds where the bullet's base has moved 0.8 (the base at the muzzle,
 x = 1; its base is the centre less the centre's initial distance from
