@@ -3,7 +3,7 @@
 
     muzzle.py heavy_solid.dat light_solid.dat ...
 
-Reads plotCsmpm.py's NAME_solid.dat of each run (the bullet's centre and
+Reads bin/tools/plotCsmpm.py's NAME_solid.dat of each run (the bullet's centre and
 momentum per written time; its caseInfo next to it gives rhoS, pC, rhoC),
 finds where the bullet's base has moved 0.8 (the base at the muzzle,
 x = 1; its base is the centre less the centre's initial distance from
@@ -20,15 +20,17 @@ m = rhoS 0.15 x 0.2; p_front is the air's 1 ('vacuum-like', an upper bound)
 or the quasi-steady pressure behind the shock a piston at speed v drives
 into air at rest (p 1, sound speed 1):
   p_front = 1 + g(g+1)/4 M^2 + g M sqrt(1 + ((g+1)/4)^2 M^2),  M = v.
-Integrated with RK4 in steps of 1e-5.  Writes muzzle.dat.
+Integrated with RK4 in steps of 1e-5.  A run that stops before the base
+reaches the muzzle is compared at its last written time with the first
+estimate over the same travel.  Writes muzzle.dat.
 """
 import math, os, sys
 
 g = 1.4
 
 
-def estimate(rhoS, pC, rhoC, shock):
-    A, L0, travel = 0.2, 0.2, 0.8
+def estimate(rhoS, pC, rhoC, shock, travel=0.8):
+    A, L0 = 0.2, 0.2
     m = rhoS*0.15*0.2; C = rhoC*L0*0.2
     def acc(x, v):
         pm = pC*(L0/(L0 + x))**g
@@ -55,7 +57,8 @@ def measured(path):
             t, M, px, cx = float(s[0]), float(s[2]), float(s[3]), float(s[5])
             rows.append((t, cx, px/M))
     c0 = rows[0][1]
-    for (t0, c_0, v0), (t1, c_1, v1) in zip(rows, rows[1:]):
+    rows = [(t, cx, v, cx - c0) for t, cx, v in rows]
+    for (t0, c_0, v0, _), (t1, c_1, v1, _) in zip(rows, rows[1:]):
         b0, b1 = c_0 - (c0 - 0.2), c_1 - (c0 - 0.2)
         if b0 < 1 <= b1:
             f = (1 - b0)/(b1 - b0)
@@ -74,10 +77,17 @@ for path in sys.argv[1:]:
     va, ta = estimate(rhoS, pC, rhoC, False)
     vs, ts = estimate(rhoS, pC, rhoC, True)
     if tm is None:
+        d = rows[-1][3]
+        vd, td = estimate(rhoS, pC, rhoC, False, d)
         print(f'  {run} (rhoS {rhoS:g}): the base did not reach the muzzle by '
-              f't = {rows[-1][0]:g} (speed then {rows[-1][2]:.4f}); '
-              f'estimates {va:.3f} (t {ta:.3f}) / {vs:.3f} (t {ts:.3f})')
-        out.append(f'{run} {rhoS:g} nan {rows[-1][2]:.5f} {va:.5f} {vs:.5f}')
+              f't = {rows[-1][0]:g} (speed then {rows[-1][2]:.4f} after a '
+              f'travel of {d:.4f}; Lagrange with the ambient 1 in front '
+              f'{vd:.3f} (t {td:.3f}) there); '
+              f'muzzle estimates {va:.3f} (t {ta:.3f}) / {vs:.3f} (t {ts:.3f})')
+        out.append(f'{run} {rhoS:g} nan nan {va:.5f} ({ta:.4f}) {vs:.5f} '
+                   f'({ts:.4f}) end: t {rows[-1][0]:g} travel {d:.5f} speed '
+                   f'{rows[-1][2]:.5f} lagrange_ambient_same_travel {vd:.5f} '
+                   f'({td:.4f})')
         continue
     print(f'  {run} (rhoS {rhoS:g}): muzzle speed {vm:.3f} at t = {tm:.3f}; '
           f'Lagrange with the ambient 1 in front {va:.3f} (t {ta:.3f}), with the '

@@ -16,7 +16,8 @@ import os
 import re
 import sys
 import numpy as np
-from scipy.spatial import cKDTree
+sys.path.insert(0, os.path.join(os.environ["MPMFOAM_DIR"], "bin", "tools"))
+from particlePairs import hasNeighbour  # noqa: E402 (numpy only)
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
@@ -52,8 +53,7 @@ def case(d):
     t, front, nIso = [], [], 0
     for tt in times:
         P = field(os.path.join(d, tt, "lagrangian/mpmCloud/positions"))[:, :2]
-        dist, _ = cKDTree(P).query(P, k=2)
-        ok = dist[:, 1] < 2*s
+        ok = hasNeighbour(P, 2*s, strict=True)
         t.append(float(tt))
         front.append(P[ok, 0].max())
         nIso = (~ok).sum()

@@ -24,7 +24,8 @@ import os
 import re
 import sys
 import numpy as np
-from scipy.spatial import cKDTree
+sys.path.insert(0, os.path.join(os.environ["MPMFOAM_DIR"], "bin", "tools"))
+from particlePairs import hasNeighbour  # noqa: E402 (numpy only)
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
@@ -61,8 +62,7 @@ def case(d):
     t, front = [], []
     for tt in times:
         P = cl(tt, "positions")[:, :3]
-        dist, _ = cKDTree(P).query(P, k=2)
-        ok = dist[:, 1] < 2*g["spacing"]
+        ok = hasNeighbour(P, 2*g["spacing"], strict=True)
         t.append(float(tt))
         front.append(P[ok, 0].max())
     P0 = cl(times[0], "positions")[:, :3]

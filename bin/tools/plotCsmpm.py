@@ -20,9 +20,7 @@ fragments and totals are the whole cloud's.
 """
 import os, re, sys
 import numpy as np
-from scipy.spatial import cKDTree
-from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import connected_components
+from particlePairs import clusters
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
@@ -63,11 +61,9 @@ def cloud(t, field):
 
 
 def fragments(x, h):
-    """Labels of the particles' clusters: joined when closer than h."""
-    pairs = cKDTree(x).query_pairs(h, output_type='ndarray')
-    g = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])),
-                   shape=(len(x), len(x)))
-    return connected_components(g, directed=False)[1]
+    """Labels of the particles' clusters: joined when closer than h
+    (bin/tools/particlePairs.py: numpy only)."""
+    return clusters(x, h)
 
 
 C = internal('0', 'C')
