@@ -213,6 +213,31 @@ void Foam::eulerOperator::computeFluxes(const gasState& U, bool advective)
 }
 
 
+void Foam::eulerOperator::firstOrderSlotFace
+(
+    const gasState& U,
+    label slot,
+    bool advective
+)
+{
+    const label idx = mesh_.slotCell(slot);
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!mesh_.active(d)) continue;
+        const label f0 = mesh_.lowFaceOf(d)[idx];
+        const cartesianMesh::segment& s = mesh_.segmentOfFace(d, f0);
+        const label m = f0 - s.faceOffset;
+        label mf = -1;
+        if (s.lowGhost == slot && m == 0) mf = 0;
+        else if (s.highGhost == slot && m + 1 == s.length) mf = s.length;
+        if (mf < 0) continue;
+        const gasLine line = gather(U, d, s, 1, advective);
+        firstOrderFace(line, s, mf);
+        if (open_[d]) blendFace(d, s.faceOffset + mf);
+    }
+}
+
+
 void Foam::eulerOperator::firstOrderFaces
 (
     const gasState& U,

@@ -38,6 +38,7 @@ Foam::gasStepper::gasStepper(const dictionary& dict, eulerOperator& op)
     U1_.resize(mesh_.nLattice());
     U2_.resize(mesh_.nLattice());
     mark_.assign(mesh_.nLattice(), 0);
+    fell_.assign(mesh_.nLattice(), 0);
 }
 
 
@@ -91,43 +92,91 @@ bool Foam::gasStepper::stage
     }
 
     // Positivity fallback: first-order fluxes around the offending cells
-    for (label pass = 0; pass < 4 && !bad.empty(); ++pass)
+    auto fallback = [&](std::vector<label>& bad)
     {
-        std::vector<label> touched;
-        for (const label i : bad)
+        for (label pass = 0; pass < 4 && !bad.empty(); ++pass)
         {
-            op_.firstOrderFaces(Us, i, advective);
-            ++rep.fallbackCells;
-            auto touch = [&](label j)
+            std::vector<label> touched;
+            for (const label i : bad)
             {
-                if (j >= 0 && j < mesh_.nLattice() && !mark_[j]
-                 && mesh_.cellAt()[j] >= 0)
+                op_.firstOrderFaces(Us, i, advective);
+                ++rep.fallbackCells;
+                if (!fell_[i])
                 {
-                    mark_[j] = 1;
-                    touched.push_back(j);
+                    fell_[i] = 1;
+                    fellCells_.push_back(i);
                 }
-            };
-            touch(i);
-            for (label d = 0; d < 3; ++d)
+                auto touch = [&](label j)
+                {
+                    if (j >= 0 && j < mesh_.nLattice() && !mark_[j]
+                     && mesh_.cellAt()[j] >= 0)
+                    {
+                        mark_[j] = 1;
+                        touched.push_back(j);
+                    }
+                };
+                touch(i);
+                for (label d = 0; d < 3; ++d)
+                {
+                    if (!mesh_.active(d)) continue;
+                    touch(i - mesh_.stride(d));
+                    touch(i + mesh_.stride(d));
+                }
+            }
+            bad.clear();
+            for (const label j : touched)
             {
-                if (!mesh_.active(d)) continue;
-                touch(i - mesh_.stride(d));
-                touch(i + mesh_.stride(d));
+                mark_[j] = 0;
+                update(j);
+                if (!out.admissible(j, gamma_)) bad.push_back(j);
             }
         }
-        bad.clear();
-        for (const label j : touched)
+    };
+    fallback(bad);
+
+    // Parallel: a processor face is one face of the serial lattice.  When
+    // the cell on one side fell back, the rank on the other side takes the
+    // same first-order flux for that face and updates its cell again (which
+    // may fall back in turn), until no rank has news
+    label fromNeighbours = 0;
+    if (Pstream::parRun())
+    {
+        const label nSlots = mesh_.nGhostSlots();
+        std::vector<double> mine(nSlots), theirs;
+        std::vector<char> taken(nSlots, 0);
+        for (label round = 0; round < 8; ++round)
         {
-            mark_[j] = 0;
-            update(j);
-            if (!out.admissible(j, gamma_)) bad.push_back(j);
+            for (label j = 0; j < nSlots; ++j)
+            {
+                mine[j] = fell_[mesh_.slotCell(j)] ? 1 : 0;
+            }
+            mesh_.exchangeSlots(mine, theirs);
+            bool news = false;
+            for (label j = 0; j < nSlots; ++j)
+            {
+                const label c = mesh_.slotCell(j);
+                if (theirs[j] > 0 && !taken[j] && !fell_[c])
+                {
+                    taken[j] = 1;
+                    op_.firstOrderSlotFace(Us, j, advective);
+                    ++fromNeighbours;
+                    update(c);
+                    if (!out.admissible(c, gamma_)) bad.push_back(c);
+                    news = true;
+                }
+            }
+            fallback(bad);
+            reduce(news, orOp<bool>());
+            if (!news) break;
         }
     }
+    for (const label i : fellCells_) fell_[i] = 0;
+    fellCells_.clear();
 
     // A replaced face of a periodic line's end cell also belongs to the cell
     // at its other end: refresh every update once, so no cell keeps a stale
     // flux and the stage stays conservative
-    if (fallbackBefore != rep.fallbackCells && bad.empty())
+    if ((fallbackBefore != rep.fallbackCells || fromNeighbours) && bad.empty())
     {
         for (const label i : cells_)
         {
