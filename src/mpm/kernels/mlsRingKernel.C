@@ -317,13 +317,15 @@ void Foam::mlsRingKernel::computeDim
             {
                 const unsigned mask = ringAdj[s];
                 const label i0 = s - rb;
+                // The set bits are visited in increasing order (the
+                // lowest first): the sums are those of a scan over i
                 if (i0 < nv)
                 {
                     // A cell vertex: its own B first, then the others
                     e = sv.B[i0];
-                    for (label i = 0; i < nv; ++i)
+                    for (unsigned m = mask & ~(1u << i0); m; m &= m - 1)
                     {
-                        if (i != i0 && (mask & (1u << i))) e += sv.B[i];
+                        e += sv.B[__builtin_ctz(m)];
                     }
                 }
                 else if (nv <= 4)
@@ -333,9 +335,9 @@ void Foam::mlsRingKernel::computeDim
                 else
                 {
                     e = 0;
-                    for (label i = 0; i < nv; ++i)
+                    for (unsigned m = mask; m; m &= m - 1)
                     {
-                        if (mask & (1u << i)) e += sv.B[i];
+                        e += sv.B[__builtin_ctz(m)];
                     }
                 }
                 e = max(e, scalar(0));
