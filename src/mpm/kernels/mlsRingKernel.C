@@ -140,6 +140,28 @@ scalar invertMoment(const label n, scalar M[4][4], scalar Minv[4][4])
     return diagMax > 0 ? minPivot/diagMax : 0;
 }
 
+// The three edge neighbours in a hexahedron of its vertex i (ascending),
+// and the adjacency mask of that vertex in its own cell's ring: itself
+// and those three
+constexpr unsigned char hexOthers[8][3] =
+{
+    {1, 3, 4}, {0, 2, 5}, {1, 3, 6}, {0, 2, 7},
+    {0, 5, 7}, {1, 4, 6}, {2, 5, 7}, {3, 4, 6}
+};
+
+constexpr unsigned hexMask(const label i)
+{
+    return (1u << i) | (1u << hexOthers[i][0]) | (1u << hexOthers[i][1])
+      | (1u << hexOthers[i][2]);
+}
+
+const unsigned hexCellMask[8] =
+{
+    hexMask(0), hexMask(1), hexMask(2), hexMask(3),
+    hexMask(4), hexMask(5), hexMask(6), hexMask(7)
+};
+
+
 // Moment matrix M = sum_s d_s P_s P_s^T, P_s = [1, x_v - x_p] (dx: D per
 // sample), summed over the samples in order
 template<int D>
@@ -175,6 +197,106 @@ inline void momentMatrix
         }
     }
 }
+
+
+// The samples of one particle over its cell's ring: the ring vertices
+// inside their support, with d_vp = eta_vp N(r/h_v) (eta only with
+// diminish) and the offsets x_v - x_p.  Compiled per number NV of the
+// cell's vertices, so that the loops over them unroll.
+template<int D>
+struct ringSamples
+{
+    const bool diminish;
+    const scalar* B;            //!< shape values of the cell's vertices
+    const label* ringVertex;    //!< the ring (cell vertices first)
+    const unsigned char* ringAdj;
+    const vector* vx;
+    const label* ax;
+    const scalar* xpa;
+    const scalar* support2;
+    const scalar* h;
+    label* __restrict__ sv;
+    scalar* __restrict__ sd;
+    scalar* __restrict__ sx;
+
+    // (2.29) eta_vp = sum_{n in N0} B_np A_vn, the set bits of the mask
+    // visited lowest first (the sums of a scan over the cell's vertices);
+    // subset sums when NV <= 4
+    template<int NV>
+    label gather(const label nRing) const
+    {
+        scalar subset[16];
+        if (NV <= 4 && diminish)
+        {
+            subset[0] = 0;
+            for (label i = 0; i < NV; ++i)
+            {
+                const label m0 = 1 << i;
+                for (label m = 0; m < m0; ++m) subset[m0 + m] = subset[m] + B[i];
+            }
+        }
+
+        label ns = 0;
+        for (label s = 0; s < nRing; ++s)
+        {
+            const label v = ringVertex[s];
+            scalar P[D];
+            scalar r2 = 0;
+            for (label a = 0; a < D; ++a)
+            {
+                // The axes of a 3D view are x, y, z (checked at
+                // construction)
+                P[a] = vx[v][D == 3 ? a : ax[a]] - xpa[a];
+                r2 += P[a]*P[a];
+            }
+            // Outside the support: d = 0 (support2 has slack for round-off)
+            if (r2 >= support2[v]) continue;
+
+            scalar e = 1;
+            if (diminish)
+            {
+                const unsigned mask = ringAdj[s];
+                if (NV == 8 && s < NV && mask == hexCellMask[s])
+                {
+                    // A vertex of a hexahedron and its three neighbours
+                    // in it: the sum below, unrolled
+                    const unsigned char* o = hexOthers[s];
+                    e = B[s] + B[o[0]] + B[o[1]] + B[o[2]];
+                }
+                else if (s < NV)
+                {
+                    // A cell vertex: its own B first, then the others
+                    e = B[s];
+                    for (unsigned m = mask & ~(1u << s); m; m &= m - 1)
+                    {
+                        e += B[__builtin_ctz(m)];
+                    }
+                }
+                else if (NV <= 4)
+                {
+                    e = subset[mask];
+                }
+                else
+                {
+                    e = 0;
+                    for (unsigned m = mask; m; m &= m - 1)
+                    {
+                        e += B[__builtin_ctz(m)];
+                    }
+                }
+                e = max(e, scalar(0));
+            }
+            const scalar ds = e*Foam::mlsRingKernel::bSpline(std::sqrt(r2)/h[v]);
+            if (ds == 0) continue;
+
+            sv[ns] = v;
+            sd[ns] = ds;
+            for (label a = 0; a < D; ++a) sx[D*ns + a] = P[a];
+            ++ns;
+        }
+        return ns;
+    }
+};
 
 } // End anonymous namespace
 
@@ -282,73 +404,21 @@ void Foam::mlsRingKernel::computeDim
         scalar xpa[D];
         for (label a = 0; a < D; ++a) xpa[a] = xp[ax[a]];
 
-        // eta of a ring vertex: the B_n of the cell vertices its mask
-        // names, summed in cell-vertex order (subset sums when <= 4)
-        const label nv = sv.n;
-        scalar subset[16];
-        if (diminish_ && nv <= 4)
-        {
-            subset[0] = 0;
-            for (label i = 0; i < nv; ++i)
-            {
-                const label m0 = 1 << i;
-                for (label m = 0; m < m0; ++m) subset[m0 + m] = subset[m] + sv.B[i];
-            }
-        }
-
         const label rb = ringStart[c];
         const label re = ringStart[c + 1];
-        label ns = 0;
-        for (label s = rb; s < re; ++s)
+        const ringSamples<D> rs
         {
-            const label v = ringVertex[s];
-            scalar P[D];
-            scalar r2 = 0;
-            for (label a = 0; a < D; ++a)
-            {
-                P[a] = vx[v][ax[a]] - xpa[a];
-                r2 += P[a]*P[a];
-            }
-            // Outside the support: d = 0 (support2 has slack for round-off)
-            if (r2 >= support2[v]) continue;
-
-            scalar e = 1;
-            if (diminish_)
-            {
-                const unsigned mask = ringAdj[s];
-                const label i0 = s - rb;
-                // The set bits are visited in increasing order (the
-                // lowest first): the sums are those of a scan over i
-                if (i0 < nv)
-                {
-                    // A cell vertex: its own B first, then the others
-                    e = sv.B[i0];
-                    for (unsigned m = mask & ~(1u << i0); m; m &= m - 1)
-                    {
-                        e += sv.B[__builtin_ctz(m)];
-                    }
-                }
-                else if (nv <= 4)
-                {
-                    e = subset[mask];
-                }
-                else
-                {
-                    e = 0;
-                    for (unsigned m = mask; m; m &= m - 1)
-                    {
-                        e += sv.B[__builtin_ctz(m)];
-                    }
-                }
-                e = max(e, scalar(0));
-            }
-            const scalar ds = e*bSpline(std::sqrt(r2)/h[v]);
-            if (ds == 0) continue;
-
-            sv_[ns] = v;
-            sd[ns] = ds;
-            for (label a = 0; a < D; ++a) sx[D*ns + a] = P[a];
-            ++ns;
+            diminish_, sv.B.cdata(), ringVertex.cdata() + rb,
+            ringAdj.cdata() + rb, vx.cdata(), ax, xpa, support2.cdata(),
+            h.cdata(), sv_, sd, sx
+        };
+        label ns = 0;
+        switch (sv.n)
+        {
+            case 2: ns = rs.template gather<2>(re - rb); break;
+            case 3: ns = rs.template gather<3>(re - rb); break;
+            case 4: ns = rs.template gather<4>(re - rb); break;
+            default: ns = rs.template gather<8>(re - rb); break;
         }
 
         scalar M[4][4];

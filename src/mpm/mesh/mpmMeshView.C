@@ -226,6 +226,10 @@ void Foam::mpmMeshView::build()
     }
 
     buildMaps();
+
+    // A walk longer than a few mesh widths has cycled (findCell)
+    walkSteps_ =
+        100 + 4*label(std::pow(scalar(nCells()), 1.0/max(dim_, label(1))) + 1);
 }
 
 

@@ -17,6 +17,67 @@ using namespace Foam::mpmMeshShapes;
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+inline void Foam::mpmMeshView::affineLocal
+(
+    const cellMap& m,
+    const vector& x,
+    vector& xi
+) const
+{
+    // The sums in the order of the general loop (b over rows, a over the
+    // axes), written out per dimension
+    xi = Zero;
+    if (dim_ == 3)
+    {
+        const scalar d0 = x[axes_[0]] - m.x0[0];
+        const scalar d1 = x[axes_[1]] - m.x0[1];
+        const scalar d2 = x[axes_[2]] - m.x0[2];
+        for (label b = 0; b < 3; ++b)
+        {
+            xi[b] = m.A[b][0]*d0 + m.A[b][1]*d1 + m.A[b][2]*d2;
+        }
+    }
+    else if (dim_ == 2)
+    {
+        const scalar d0 = x[axes_[0]] - m.x0[0];
+        const scalar d1 = x[axes_[1]] - m.x0[1];
+        xi[0] = m.A[0][0]*d0 + m.A[0][1]*d1;
+        xi[1] = m.A[1][0]*d0 + m.A[1][1]*d1;
+    }
+    else
+    {
+        xi[0] = m.A[0][0]*(x[axes_[0]] - m.x0[0]);
+    }
+}
+
+
+namespace
+{
+
+// The multilinear values alone (no derivatives): the products of
+// mpmMeshView::multilinear, in its order
+inline void multilinearValues
+(
+    const bool hex,
+    const Foam::vector& xi,
+    Foam::scalar* N
+)
+{
+    const Foam::scalar a0 = 1 - xi[0], a1 = xi[0];
+    const Foam::scalar b0 = 1 - xi[1], b1 = xi[1];
+    if (!hex)
+    {
+        N[0] = a0*b0; N[1] = a1*b0; N[2] = a1*b1; N[3] = a0*b1;
+        return;
+    }
+    const Foam::scalar c0 = 1 - xi[2], c1 = xi[2];
+    N[0] = a0*b0*c0; N[1] = a1*b0*c0; N[2] = a1*b1*c0; N[3] = a0*b1*c0;
+    N[4] = a0*b0*c1; N[5] = a1*b0*c1; N[6] = a1*b1*c1; N[7] = a0*b1*c1;
+}
+
+} // End anonymous namespace
+
+
 void Foam::mpmMeshView::multilinear
 (
     shapeType s,
@@ -72,15 +133,7 @@ bool Foam::mpmMeshView::isoparametric
 
     // The affine map: exact for parallelograms and parallelepipeds, the
     // first Newton step from the centre otherwise
-    scalar d[3];
-    for (label a = 0; a < n; ++a) d[a] = x[axes_[a]] - m.x0[a];
-    xi = Zero;
-    for (label b = 0; b < n; ++b)
-    {
-        scalar t = 0;
-        for (label a = 0; a < n; ++a) t += m.A[b][a]*d[a];
-        xi[b] = t;
-    }
+    affineLocal(m, x, xi);
     if (k == AFFINE) return true;
 
     // Curved cell: Newton on the isoparametric map from the affine guess
@@ -185,7 +238,9 @@ Foam::scalar Foam::mpmMeshView::outside
     }
 
     vector xi;
-    const bool converged = isoparametric(c, x, xi);
+    bool converged = true;
+    if (mapType_[c] == AFFINE) affineLocal(cellMap_[c], x, xi);
+    else converged = isoparametric(c, x, xi);
     for (label a = 0; a < n; ++a)
     {
         if (-xi[a] > out) { out = -xi[a]; exitFace = 2*a; }
@@ -257,17 +312,17 @@ void Foam::mpmMeshView::evaluate
     // J^-1 from the cell map (affine) or at the point (curved)
     const label nv = sv.n;
     vector xi;
-    const bool converged = isoparametric(c, x, xi);
+    bool converged = true;
+    if (mapType_[c] == AFFINE) affineLocal(m, x, xi);
+    else converged = isoparametric(c, x, xi);
     scalar N[8];
     vector dN[8];
-    multilinear(s, xi, N, dN);
+    if (gradients) multilinear(s, xi, N, dN);
+    else multilinearValues(s == HEX, xi, sv.B.data());
 
     scalar Jc[3][3];
     const scalar (*Ji)[3] = m.A;
-    if (!gradients)
-    {
-        for (label i = 0; i < nv; ++i) sv.B[i] = N[i];
-    }
+    if (!gradients) {}
     else if (mapType_[c] != AFFINE)
     {
         const label* cv = &cellVertices_[cellStart_[c]];
@@ -331,8 +386,7 @@ Foam::label Foam::mpmMeshView::findCell(const vector& x, const label start) cons
 
     label c = (start >= 0 && start < nC) ? start : 0;
     label exitFace = -1;
-    const label maxSteps = 100 + 4*label(std::pow(scalar(nC), 1.0/dim_) + 1);
-    for (label step = 0; step < maxSteps; ++step)
+    for (label step = 0; step < walkSteps_; ++step)
     {
         if (outside(c, x, exitFace) <= tol)
         {
