@@ -236,26 +236,41 @@ struct ringSamples
             }
         }
 
+        // Locals: the stores below cannot change them
+        scalar xp[D];
+        label axis[D];
+        for (label a = 0; a < D; ++a)
+        {
+            xp[a] = xpa[a];
+            // The axes of a 3D view are x, y, z (checked at construction)
+            axis[a] = (D == 3) ? a : ax[a];
+        }
+        const label* __restrict__ ring = ringVertex;
+        const unsigned char* __restrict__ adj = ringAdj;
+        const vector* __restrict__ xv = vx;
+        const scalar* __restrict__ s2 = support2;
+        const scalar* __restrict__ hv = h;
+        label* __restrict__ svOut = sv;
+        scalar* __restrict__ sdOut = sd;
+        scalar* __restrict__ sxOut = sx;
+
         label ns = 0;
         for (label s = 0; s < nRing; ++s)
         {
-            const label v = ringVertex[s];
+            const label v = ring[s];
             scalar P[D];
-            scalar r2 = 0;
-            for (label a = 0; a < D; ++a)
-            {
-                // The axes of a 3D view are x, y, z (checked at
-                // construction)
-                P[a] = vx[v][D == 3 ? a : ax[a]] - xpa[a];
-                r2 += P[a]*P[a];
-            }
+            for (label a = 0; a < D; ++a) P[a] = xv[v][axis[a]] - xp[a];
+            // |P|^2 summed from the first axis (no leading 0 +: the same
+            // sum, one add fewer)
+            scalar r2 = P[0]*P[0];
+            for (label a = 1; a < D; ++a) r2 += P[a]*P[a];
             // Outside the support: d = 0 (support2 has slack for round-off)
-            if (r2 >= support2[v]) continue;
+            if (r2 >= s2[v]) continue;
 
             scalar e = 1;
             if (diminish)
             {
-                const unsigned mask = ringAdj[s];
+                const unsigned mask = adj[s];
                 if (NV == 8 && s < NV && mask == hexCellMask[s])
                 {
                     // A vertex of a hexahedron and its three neighbours
@@ -286,12 +301,12 @@ struct ringSamples
                 }
                 e = max(e, scalar(0));
             }
-            const scalar ds = e*Foam::mlsRingKernel::bSpline(std::sqrt(r2)/h[v]);
+            const scalar ds = e*Foam::mlsRingKernel::bSpline(std::sqrt(r2)/hv[v]);
             if (ds == 0) continue;
 
-            sv[ns] = v;
-            sd[ns] = ds;
-            for (label a = 0; a < D; ++a) sx[D*ns + a] = P[a];
+            svOut[ns] = v;
+            sdOut[ns] = ds;
+            for (label a = 0; a < D; ++a) sxOut[D*ns + a] = P[a];
             ++ns;
         }
         return ns;
