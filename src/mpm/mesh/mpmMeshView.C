@@ -75,13 +75,6 @@ const char* Foam::mpmMeshView::shapeName(shapeType s)
 }
 
 
-Foam::label Foam::mpmMeshView::nShapeVertices(shapeType s)
-{
-    static const label n[] = {2, 3, 4, 4, 8};
-    return n[s];
-}
-
-
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::mpmMeshView::build()

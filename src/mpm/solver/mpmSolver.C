@@ -852,6 +852,7 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
     // and the grid velocity at the particles for the positions (2.13),
     // in one pass over the weights
     Fnew_.setSize(nP);
+    Jnew_.setSize(nP);
     vGrid_.setSize(nP);
     for (label p = 0; p < nP; ++p)
     {
@@ -866,6 +867,7 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
         vGrid_[p] = vg;
         Fnew_[p] = (I + dt*gradV) & P.F[p];
         const scalar J = det(Fnew_[p]);
+        Jnew_[p] = J;
         if (!(J > 0) || !std::isfinite(J))
         {
             failure_ = "particle " + Foam::name(p) + " at "
@@ -925,7 +927,7 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
     for (label p = 0; p < nP; ++p)
     {
         P.F[p] = Fnew_[p];
-        P.V[p] = det(P.F[p])*P.Jp[p]*P.V0[p];
+        P.V[p] = Jnew_[p]*P.Jp[p]*P.V0[p];
     }
     updateStress(P, true);
 
