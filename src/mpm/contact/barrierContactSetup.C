@@ -12,6 +12,7 @@
 #include "polyMesh.H"
 #include "emptyPolyPatch.H"
 #include "processorPolyPatch.H"
+#include "faceZoneMesh.H"
 #include "Pstream.H"
 #include "boundBox.H"
 #include "SubField.H"
@@ -92,6 +93,44 @@ Foam::vector Foam::barrierContact::nearestOnTriangle
 }
 
 
+bool Foam::barrierContact::pathMeets
+(
+    const face& f,
+    const vector& x0,
+    const vector& x1
+)
+{
+    const vector r = x1 - x0;
+    if (f.segment)
+    {
+        // Two segments of one plane: x0 + t r = a + u s, t, u in [0, 1]
+        const vector s = f.b - f.a;
+        const vector rs = r ^ s;
+        const scalar rs2 = magSqr(rs);
+        if (!(rs2 > 0)) return false;       // parallel
+        const vector q = f.a - x0;
+        const scalar t = ((q ^ s) & rs)/rs2;
+        const scalar u = ((q ^ r) & rs)/rs2;
+        return t >= 0 && t <= 1 && u >= 0 && u <= 1;
+    }
+
+    // Triangle: x0 + t r = a + u (b - a) + v (c - a), by Cramer's rule
+    const vector e1 = f.b - f.a;
+    const vector e2 = f.c - f.a;
+    const vector pv = r ^ e2;
+    const scalar det = e1 & pv;
+    if (!(mag(det) > 0)) return false;      // parallel
+    const vector tv = x0 - f.a;
+    const scalar u = (tv & pv)/det;
+    if (u < 0 || u > 1) return false;
+    const vector qv = tv ^ e1;
+    const scalar v = (r & qv)/det;
+    if (v < 0 || u + v > 1) return false;
+    const scalar t = (e2 & qv)/det;
+    return t >= 0 && t <= 1;
+}
+
+
 Foam::scalar Foam::barrierContact::meanEdge(const UList<face>& faces)
 {
     scalar sum = 0;
@@ -132,10 +171,13 @@ void Foam::barrierContact::readSettings
     }
     if (!(hMean > 0) && !dict.found("dHat", keyType::LITERAL))
     {
+        const bool zones = !zoneNames_.empty();
         badEntry
         (
-            dict, "patches", entryText(dict, "patches"),
-            "patches with faces (these have none, so dHat has no default)"
+            dict, zones ? "zones" : "patches",
+            entryText(dict, zones ? "zones" : "patches"),
+            "patches or zones with faces (these have none, so dHat has no"
+            " default)"
         );
     }
     dHat_ = getPositive(dict, "dHat", 0.25*hMean);
@@ -331,10 +373,14 @@ Foam::barrierContact::barrierContact
     nWithin_(0),
     nExamined_(0),
     forceTime_(0),
-    nForceCalls_(0)
+    nForceCalls_(0),
+    frictionWork_(0)
 {
     using namespace dictionaryChecks;
     const polyBoundaryMesh& pbm = mesh.boundaryMesh();
+    const faceZoneMesh& fzm = mesh.faceZones();
+    const bool hasPatches = dict.found("patches", keyType::LITERAL);
+    const bool hasZones = dict.found("zones", keyType::LITERAL);
 
     // The patches, checked
     wordList allowed;
@@ -348,9 +394,30 @@ Foam::barrierContact::barrierContact
     OStringStream allowedText;
     allowedText << "a list of boundary patches of the mesh (not empty or"
         << " processor): " << allowed;
-    patchNames_ = getAs<wordList>(dict, "patches", allowedText.str());
-    if (patchNames_.empty())
+    OStringStream allowedZones;
+    allowedZones << "a list of faceZones of the mesh: " << fzm.names();
+    if (!hasPatches && !hasZones)
     {
+        missingEntry
+        (
+            dict, "patches",
+            allowedText.str() + "; or 'zones', " + allowedZones.str()
+        );
+    }
+    if (hasPatches || !hasZones)
+    {
+        patchNames_ = getAs<wordList>(dict, "patches", allowedText.str());
+    }
+    if (hasZones)
+    {
+        zoneNames_ = getAs<wordList>(dict, "zones", allowedZones.str());
+    }
+    if (patchNames_.empty() && zoneNames_.empty())
+    {
+        if (hasZones)
+        {
+            badEntry(dict, "zones", "()", allowedZones.str());
+        }
         badEntry(dict, "patches", "()", allowedText.str());
     }
     labelList patchIDs(patchNames_.size());
@@ -367,57 +434,88 @@ Foam::barrierContact::barrierContact
         }
         patchIDs[k] = id;
     }
+    labelList zoneIDs(zoneNames_.size());
+    forAll(zoneNames_, z)
+    {
+        const label id = fzm.findZoneID(zoneNames_[z]);
+        if (id < 0)
+        {
+            badEntry(dict, "zones", zoneNames_[z], allowedZones.str());
+        }
+        zoneIDs[z] = id;
+    }
 
-    // This rank's faces: a, b, c, outward normal per face, and the patch
+    // This rank's faces: a, b, c, outward normal per face, and the surface
     const bool twoD = (view.dim() == 2);
     const pointField& pts = mesh.points();
     List<vector> local;
     labelList localPatch;
     DynamicList<vector> dl;
     DynamicList<label> dp;
+    auto addFace = [&](const Foam::face& f, const vector& S, const label k)
+    {
+        const vector n = S/max(mag(S), VSMALL);
+        if (twoD)
+        {
+            // The face's trace in the solution plane: its two points
+            // farthest apart once projected
+            scalar best = -1;
+            vector a(Zero), b(Zero);
+            forAll(f, m)
+            {
+                for (label q = m + 1; q < f.size(); ++q)
+                {
+                    const vector pm = view.inPlane(pts[f[m]]);
+                    const vector pq = view.inPlane(pts[f[q]]);
+                    if (magSqr(pq - pm) > best)
+                    {
+                        best = magSqr(pq - pm);
+                        a = pm;
+                        b = pq;
+                    }
+                }
+            }
+            dl.append(a); dl.append(b); dl.append(b);
+            dl.append(view.inPlane(n));
+            dp.append(k);
+        }
+        else
+        {
+            for (label m = 1; m + 1 < f.size(); ++m)
+            {
+                dl.append(pts[f[0]]);
+                dl.append(pts[f[m]]);
+                dl.append(pts[f[m + 1]]);
+                dl.append(n);
+                dp.append(k);
+            }
+        }
+    };
     forAll(patchIDs, k)
     {
         const polyPatch& pp = pbm[patchIDs[k]];
         const vectorField Sf(pp.faceAreas());
         forAll(pp, i)
         {
-            const Foam::face& f = pp[i];
-            const vector n = Sf[i]/max(mag(Sf[i]), VSMALL);
-            if (twoD)
+            addFace(pp[i], Sf[i], k);
+        }
+    }
+    forAll(zoneIDs, z)
+    {
+        const label k = patchNames_.size() + z;
+        for (const label fi : fzm[zoneIDs[z]])
+        {
+            if (!mesh.isInternalFace(fi))
             {
-                // The face's trace in the solution plane: its two points
-                // farthest apart once projected
-                scalar best = -1;
-                vector a(Zero), b(Zero);
-                forAll(f, m)
-                {
-                    for (label q = m + 1; q < f.size(); ++q)
-                    {
-                        const vector pm = view.inPlane(pts[f[m]]);
-                        const vector pq = view.inPlane(pts[f[q]]);
-                        if (magSqr(pq - pm) > best)
-                        {
-                            best = magSqr(pq - pm);
-                            a = pm;
-                            b = pq;
-                        }
-                    }
-                }
-                dl.append(a); dl.append(b); dl.append(b);
-                dl.append(view.inPlane(n));
-                dp.append(k);
+                // A boundary face: not an empty one; a processor face
+                // from its owner rank only (the ranks gather the faces)
+                const polyPatch& pp = pbm[pbm.whichPatch(fi)];
+                if (isA<emptyPolyPatch>(pp)) continue;
+                const processorPolyPatch* proc =
+                    isA<processorPolyPatch>(pp);
+                if (proc && !proc->owner()) continue;
             }
-            else
-            {
-                for (label m = 1; m + 1 < f.size(); ++m)
-                {
-                    dl.append(pts[f[0]]);
-                    dl.append(pts[f[m]]);
-                    dl.append(pts[f[m + 1]]);
-                    dl.append(n);
-                    dp.append(k);
-                }
-            }
+            addFace(mesh.faces()[fi], mesh.faceAreas()[fi], k);
         }
     }
     local.transfer(dl);
@@ -461,8 +559,12 @@ Foam::barrierContact::barrierContact
     readSettings(dict, meanEdge(faces_));
     buildCellFaces();
 
-    Info<< "Barrier contact on patches " << patchNames_ << ": "
-        << faces_.size() << (twoD ? " segments" : " triangles") << ", dHat "
+    Info<< "Barrier contact on patches " << patchNames_;
+    if (zoneNames_.size())
+    {
+        Info<< " and faceZones " << zoneNames_;
+    }
+    Info<< ": " << faces_.size() << (twoD ? " segments" : " triangles") << ", dHat "
         << dHat_ << " m, stiffness " << stiffness_ << " (kappa_p = stiffness"
         << " E V0_p/dHat^2), friction " << friction_ << ", epsV " << epsV_
         << " m/s; " << returnReduce(nContactCells(), sumOp<label>())
@@ -475,11 +577,13 @@ Foam::barrierContact::barrierContact
     const mpmMeshView& view,
     const List<face>& faces,
     const wordList& patchNames,
-    const dictionary& dict
+    const dictionary& dict,
+    const wordList& zoneNames
 )
 :
     mesh_(view),
     patchNames_(patchNames),
+    zoneNames_(zoneNames),
     faces_(faces),
     dHat_(0),
     stiffness_(1),
@@ -489,7 +593,8 @@ Foam::barrierContact::barrierContact
     nWithin_(0),
     nExamined_(0),
     forceTime_(0),
-    nForceCalls_(0)
+    nForceCalls_(0),
+    frictionWork_(0)
 {
     readSettings(dict, meanEdge(faces_));
     buildCellFaces();
