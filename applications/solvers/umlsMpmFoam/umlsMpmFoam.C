@@ -368,7 +368,11 @@ int main(int argc, char *argv[])
             << returnReduce(contact->nWithin(), sumOp<label>())
             << " particles within dHat, "
             << returnReduce(contact->nExamined(), sumOp<label>())
-            << " examined (in cells near the patches)" << nl;
+            << " examined (in cells near the patches); per step on average "
+            << returnReduce(contact->nWithinSum(), sumOp<scalar>())/calls
+            << " within dHat, "
+            << returnReduce(contact->nExaminedSum(), sumOp<scalar>())/calls
+            << " examined" << nl;
         if (contact->friction() > 0)
         {
             Info<< "Contact: friction work "

@@ -157,6 +157,8 @@ void Foam::barrierContact::forces
         std::chrono::steady_clock::now() - t0
     ).count();
     ++nForceCalls_;
+    nWithinSum_ += nWithin_;
+    nExaminedSum_ += nExamined_;
 }
 
 

@@ -374,7 +374,9 @@ Foam::barrierContact::barrierContact
     nExamined_(0),
     forceTime_(0),
     nForceCalls_(0),
-    frictionWork_(0)
+    frictionWork_(0),
+    nWithinSum_(0),
+    nExaminedSum_(0)
 {
     using namespace dictionaryChecks;
     const polyBoundaryMesh& pbm = mesh.boundaryMesh();
@@ -594,7 +596,9 @@ Foam::barrierContact::barrierContact
     nExamined_(0),
     forceTime_(0),
     nForceCalls_(0),
-    frictionWork_(0)
+    frictionWork_(0),
+    nWithinSum_(0),
+    nExaminedSum_(0)
 {
     readSettings(dict, meanEdge(faces_));
     buildCellFaces();
