@@ -3,7 +3,9 @@
   b(d) = -(d - dHat)^2 ln(d/dHat), its derivatives against finite
   differences, the friction mollifier's limits, the nearest points of
   segments and triangles against sampling, the force on a particle near a
-  wall and the implicit friction's sliding and sticking limits.
+  wall and the implicit friction's sliding and sticking limits, a contact
+  surface inside the mesh (a faceZone) pushing from both sides and
+  refusing a step through it, and the path-face intersection.
 \*---------------------------------------------------------------------------*/
 
 #include "barrierContact.H"
@@ -250,6 +252,104 @@ TEST(barrierContact, forceAndFrictionOnAFloor)
     }
     contact.resetVertices(touched);
     for (label i = 0; i < nV; ++i) EXPECT_EQ(contact.vertexBound()[i], 0);
+}
+
+
+// An internal floor (a faceZone's faces: surface index past the patches)
+// at y = 2 across the 4 x 4 mesh: the barrier pushes a particle away from
+// it on either side, and a step through it, which stays inside the mesh,
+// is refused (distance 0) while a shorter one passes
+TEST(barrierContact, internalZoneFloor)
+{
+    auto mesh = testMeshes::plane(4, false, 0.0);
+    const scalar x1 = mesh->bbMax().x();
+    const scalar y0 = 0.5*(mesh->bbMin().y() + mesh->bbMax().y());
+    List<barrierContact::face> faces(1);
+    faces[0].a = vector(0, y0, 0);
+    faces[0].b = vector(x1, y0, 0);
+    faces[0].c = faces[0].b;
+    faces[0].nOut = vector(0, 1, 0);
+    faces[0].patch = 0;         // no patches: zone 0
+    faces[0].segment = true;
+    const scalar h = x1/4;
+    const scalar dHat = 0.25*h;
+    barrierContact contact
+    (
+        *mesh, faces, wordList(),
+        dictOf("dHat " + std::to_string(dHat) + ";"), wordList({"floor"})
+    );
+    contact.setMaterials(scalarList(1, 1e6));
+    EXPECT_EQ(contact.zoneNames().size(), 1);
+
+    const scalar d = 0.5*dHat;
+    const scalar kappa = 1e6*1e-4/(dHat*dHat);
+    const scalar lambda = -kappa*barrierContact::barrierD1(d, dHat);
+    for (const scalar side : {1.0, -1.0})
+    {
+        mpmParticles P;
+        const vector xp(1.3*h, y0 + side*d, 0);
+        const label c = mesh->findCell(xp, 0);
+        ASSERT_GE(c, 0);
+        ASSERT_TRUE(contact.nearWall(c));
+        P.append(xp, vector(0, -side, 0), tensor::I, 1.0, 1e-4, 0, c);
+
+        kernelWeights kw;
+        kw.clear();
+        mpmMeshView::shapeValues sv;
+        mesh->shapeFunctions(c, xp, sv);
+        for (label i = 0; i < sv.n; ++i)
+        {
+            kw.append(mesh->cellVertices()[mesh->cellBegin(c) + i], sv.B[i], sv.gradB[i]);
+        }
+        kw.start.append(kw.vertex.size());
+
+        List<vector> f(1);
+        contact.forces(P, kw, f);
+        EXPECT_NEAR(f[0].x(), 0, 1e-12*lambda) << "side " << side;
+        EXPECT_NEAR(f[0].y(), side*lambda, 1e-10*lambda) << "side " << side;
+
+        // Towards the floor: half the distance passes; twice the distance
+        // (through the floor, still inside the mesh) is refused
+        scalar dist = -2;
+        const List<vector> vg(1, vector(0.2, -side, 0));
+        EXPECT_EQ(contact.check(P, vg, 0.5*d, dist), -1) << "side " << side;
+        EXPECT_EQ(contact.check(P, vg, 2*d, dist), 0) << "side " << side;
+        EXPECT_EQ(dist, 0) << "side " << side;
+        // Away from it: any length inside the mesh passes
+        const List<vector> away(1, vector(0, side, 0));
+        EXPECT_EQ(contact.check(P, away, 0.5*h, dist), -1) << "side " << side;
+    }
+}
+
+
+// The path x0 -> x1 against a triangle and a segment: crossing, missing
+// beside, stopping short, parallel
+TEST(barrierContact, pathMeetsFaces)
+{
+    barrierContact::face t;
+    t.a = vector(0, 0, 0);
+    t.b = vector(1, 0, 0);
+    t.c = vector(0, 1, 0);
+    t.nOut = vector(0, 0, 1);
+    t.patch = 0;
+    t.segment = false;
+    EXPECT_TRUE(barrierContact::pathMeets(t, vector(0.2, 0.2, 1), vector(0.2, 0.2, -1)));
+    EXPECT_TRUE(barrierContact::pathMeets(t, vector(0.2, 0.2, -0.1), vector(0.3, 0.1, 0.1)));
+    EXPECT_FALSE(barrierContact::pathMeets(t, vector(0.6, 0.6, 1), vector(0.6, 0.6, -1)));   // beside
+    EXPECT_FALSE(barrierContact::pathMeets(t, vector(0.2, 0.2, 1), vector(0.2, 0.2, 0.01))); // short
+    EXPECT_FALSE(barrierContact::pathMeets(t, vector(0.2, 0.2, 1), vector(0.3, 0.2, 1)));    // parallel
+
+    barrierContact::face s;
+    s.a = vector(0, 0, 0);
+    s.b = vector(1, 0, 0);
+    s.c = s.b;
+    s.nOut = vector(0, 1, 0);
+    s.patch = 0;
+    s.segment = true;
+    EXPECT_TRUE(barrierContact::pathMeets(s, vector(0.5, 1, 0), vector(0.4, -1, 0)));
+    EXPECT_FALSE(barrierContact::pathMeets(s, vector(1.5, 1, 0), vector(1.5, -1, 0)));   // beside
+    EXPECT_FALSE(barrierContact::pathMeets(s, vector(0.5, 1, 0), vector(0.5, 0.1, 0)));  // short
+    EXPECT_FALSE(barrierContact::pathMeets(s, vector(0, 1, 0), vector(1, 1, 0)));        // parallel
 }
 
 

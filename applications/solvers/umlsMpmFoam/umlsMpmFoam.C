@@ -308,6 +308,11 @@ int main(int argc, char *argv[])
                     << returnReduce(contact->nWithin(), sumOp<label>())
                     << "  min distance = "
                     << returnReduce(contact->minDistance(), minOp<scalar>());
+                if (contact->friction() > 0)
+                {
+                    Info<< "  friction work = "
+                        << returnReduce(contact->frictionWork(), sumOp<scalar>());
+                }
             }
             Info<< nl;
         }
@@ -363,7 +368,17 @@ int main(int argc, char *argv[])
             << returnReduce(contact->nWithin(), sumOp<label>())
             << " particles within dHat, "
             << returnReduce(contact->nExamined(), sumOp<label>())
-            << " examined (in cells near the patches)" << nl;
+            << " examined (in cells near the patches); per step on average "
+            << returnReduce(contact->nWithinSum(), sumOp<scalar>())/calls
+            << " within dHat, "
+            << returnReduce(contact->nExaminedSum(), sumOp<scalar>())/calls
+            << " examined" << nl;
+        if (contact->friction() > 0)
+        {
+            Info<< "Contact: friction work "
+                << returnReduce(contact->frictionWork(), sumOp<scalar>())
+                << " J in this run" << nl;
+        }
     }
     Info<< "End" << nl << endl;
 

@@ -25,11 +25,13 @@ Usage
         (
             bar
             {
-                type        box;            // box | sphere | cylinder | cellZone
+                type        box;            // box | sphere | cylinder | star | cellZone
                 min         (0 0 0);        // box
                 max         (25 1 1);
                 // centre (0 0 0); radius 0.2;            sphere, cylinder
                 // axis (0 0 1);                          cylinder
+                // centre, radius (the tips), coreRadius 0.1;
+                // baseRadius 0.08; spikes ((1 0 0) ...); star
                 // zone  solid;                           cellZone
                 material    steel;
                 spacing     0.5;            // or: perCell 2;
@@ -49,6 +51,11 @@ Usage
     component beyond 1e3 or det F outside [1e-6, 1e6], and regions that
     seed no particle at all stop with a FatalIOError naming the entry.
 
+    A star is a ball of radius coreRadius with a cone (a spike) along each
+    direction of spikes: its apex at distance radius from the centre, its
+    base a disc of radius baseRadius through the centre, normal to the
+    direction (coreRadius and baseRadius in (0, radius]).
+
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
@@ -64,12 +71,13 @@ using namespace Foam;
 namespace
 {
 
-enum class regionType { box, sphere, cylinder, cellZone };
+enum class regionType { box, sphere, cylinder, star, cellZone };
 const Enum<regionType> regionTypeNames
 ({
     { regionType::box, "box" },
     { regionType::sphere, "sphere" },
     { regionType::cylinder, "cylinder" },
+    { regionType::star, "star" },
     { regionType::cellZone, "cellZone" },
 });
 
@@ -78,6 +86,8 @@ struct region
     regionType type;
     vector lo, hi, centre, axis;
     scalar radius;
+    scalar coreRadius, baseRadius;
+    List<vector> spikes;
     labelHashSet zoneCells;
 
     bool inside(const vector& x, const label celli) const
@@ -93,6 +103,21 @@ struct region
             {
                 const vector d = x - centre;
                 return magSqr(d - (d & axis)*axis) <= radius*radius;
+            }
+            case regionType::star:
+            {
+                // The core ball, or a spike's cone: axial s in [0, radius],
+                // off the axis at most baseRadius (1 - s/radius)
+                const vector d = x - centre;
+                if (magSqr(d) <= coreRadius*coreRadius) return true;
+                for (const vector& e : spikes)
+                {
+                    const scalar s = d & e;
+                    if (s < 0 || s > radius) continue;
+                    const scalar rho = baseRadius*(1 - s/radius);
+                    if (magSqr(d - s*e) <= rho*rho) return true;
+                }
+                return false;
             }
             case regionType::cellZone:
                 return zoneCells.found(celli);
@@ -193,6 +218,7 @@ int main(int argc, char *argv[])
                 break;
             case regionType::sphere:
             case regionType::cylinder:
+            case regionType::star:
                 if (!d.found("centre", keyType::LITERAL))
                 {
                     missingEntry(d, "centre", "a point (x y z)");
@@ -211,6 +237,28 @@ int main(int argc, char *argv[])
                         badEntry(d, "axis", "(0 0 0)", "a non-zero direction");
                     }
                     r.axis /= mag(r.axis);
+                }
+                if (r.type == regionType::star)
+                {
+                    r.coreRadius = getInRange(d, "coreRadius", 0, r.radius);
+                    r.baseRadius = getInRange(d, "baseRadius", 0, r.radius);
+                    const string allowedSpikes
+                    (
+                        "a non-empty list of non-zero directions ((x y z) ...)"
+                    );
+                    r.spikes = getAs<List<vector>>(d, "spikes", allowedSpikes);
+                    if (r.spikes.empty())
+                    {
+                        badEntry(d, "spikes", "()", allowedSpikes);
+                    }
+                    for (vector& e : r.spikes)
+                    {
+                        if (!(mag(e) > VSMALL) || !(mag(e) < 1e30))
+                        {
+                            badEntry(d, "spikes", Foam::name(e), allowedSpikes);
+                        }
+                        e /= mag(e);
+                    }
                 }
                 break;
             case regionType::cellZone:

@@ -10,6 +10,25 @@
 #include "ops.H"
 #include <chrono>
 
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::barrierContact::crossesZone
+(
+    const label c,
+    const vector& x0,
+    const vector& x1
+) const
+{
+    const label nPatches = patchNames_.size();
+    for (label j = cellStart_[c]; j < cellStart_[c + 1]; ++j)
+    {
+        const face& f = faces_[cellFaces_[j]];
+        if (f.patch >= nPatches && pathMeets(f, x0, x1)) return true;
+    }
+    return false;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
 Foam::label Foam::barrierContact::nContactCells() const
@@ -138,6 +157,8 @@ void Foam::barrierContact::forces
         std::chrono::steady_clock::now() - t0
     ).count();
     ++nForceCalls_;
+    nWithinSum_ += nWithin_;
+    nExaminedSum_ += nExamined_;
 }
 
 
@@ -179,6 +200,7 @@ void Foam::barrierContact::friction
         }
         u = min(max(u, scalar(0)), ut);
         const vector dv = (u/ut - 1)*vt;
+        frictionWork_ += 0.5*m*(magSqr(v) - magSqr(v + dv));
         velocity[i] += dv;
         fFriction_[i] = (m/dt)*dv;
     }
@@ -308,6 +330,7 @@ Foam::label Foam::barrierContact::check
 {
     const label nP = P.size();
     const bool cached = cacheValid_ && dStart_.size() == nP;
+    const bool zones = !zoneNames_.empty();
     for (label p = 0; p < nP; ++p)
     {
         const label c = P.cell[p];
@@ -321,10 +344,23 @@ Foam::label Foam::barrierContact::check
             if (dStart_[p] > move) continue;
         }
         const vector xNew = P.x[p] + dt*vGrid[p];
-        if (mesh_.findCell(xNew, c) < 0)
+        const label cNew = mesh_.findCell(xNew, c);
+        if (cNew < 0)
         {
             dist = -1;
             return p;
+        }
+        // Through a zone face (inside the mesh): tested against the faces
+        // listed for the path's end cells (all faces within dHat of them)
+        if (zones)
+        {
+            const vector x0 = mesh_.inPlane(P.x[p]);
+            const vector x1 = mesh_.inPlane(xNew);
+            if (crossesZone(c, x0, x1) || crossesZone(cNew, x0, x1))
+            {
+                dist = 0;
+                return p;
+            }
         }
         const vector x = mesh_.inPlane(xNew);
         scalar d2 = GREAT;

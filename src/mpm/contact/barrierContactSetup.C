@@ -2,9 +2,9 @@
   mpmFoam: material point, compressible-flow and graph-network methods
            for OpenFOAM v1912
 -------------------------------------------------------------------------------
-    barrierContact: the geometry (nearest points of segments and
-    triangles), the settings, the contact faces of the patches (gathered
-    over the ranks) and the per-cell candidate faces, built once
+    barrierContact: the settings, the contact faces of the patches and
+    zones (gathered over the ranks) and the per-cell candidate faces,
+    built once; the geometry is in barrierContactGeometry.C
 \*---------------------------------------------------------------------------*/
 
 #include "barrierContact.H"
@@ -12,108 +12,14 @@
 #include "polyMesh.H"
 #include "emptyPolyPatch.H"
 #include "processorPolyPatch.H"
+#include "faceZoneMesh.H"
 #include "Pstream.H"
 #include "boundBox.H"
 #include "SubField.H"
 #include "ops.H"
 #include <algorithm>
 
-// * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
-
-Foam::vector Foam::barrierContact::nearestOnSegment
-(
-    const vector& a,
-    const vector& b,
-    const vector& x
-)
-{
-    const vector ab = b - a;
-    const scalar l2 = magSqr(ab);
-    if (l2 <= 0) return a;
-    const scalar t = min(max(((x - a) & ab)/l2, scalar(0)), scalar(1));
-    return a + t*ab;
-}
-
-
-Foam::vector Foam::barrierContact::nearestOnTriangle
-(
-    const vector& a,
-    const vector& b,
-    const vector& c,
-    const vector& x
-)
-{
-    // The Voronoi regions of the triangle's vertices, edges and interior,
-    // told apart by the projections of x - a, x - b, x - c on the edges
-    const vector ab = b - a;
-    const vector ac = c - a;
-
-    const vector ax = x - a;
-    const scalar d1 = ab & ax;
-    const scalar d2 = ac & ax;
-    if (d1 <= 0 && d2 <= 0) return a;
-
-    const vector bx = x - b;
-    const scalar d3 = ab & bx;
-    const scalar d4 = ac & bx;
-    if (d3 >= 0 && d4 <= d3) return b;
-
-    // Edge ab
-    const scalar vc = d1*d4 - d3*d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0)
-    {
-        return a + (d1/(d1 - d3))*ab;
-    }
-
-    const vector cx = x - c;
-    const scalar d5 = ab & cx;
-    const scalar d6 = ac & cx;
-    if (d6 >= 0 && d5 <= d6) return c;
-
-    // Edge ac
-    const scalar vb = d5*d2 - d1*d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0)
-    {
-        return a + (d2/(d2 - d6))*ac;
-    }
-
-    // Edge bc
-    const scalar va = d3*d6 - d5*d4;
-    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
-    {
-        const scalar w = (d4 - d3)/((d4 - d3) + (d5 - d6));
-        return b + w*(c - b);
-    }
-
-    // Interior: barycentric coordinates from the areas
-    const scalar sum = va + vb + vc;
-    if (!(mag(sum) > 0)) return a;     // degenerate triangle
-    return a + (vb/sum)*ab + (vc/sum)*ac;
-}
-
-
-Foam::scalar Foam::barrierContact::meanEdge(const UList<face>& faces)
-{
-    scalar sum = 0;
-    for (const face& f : faces)
-    {
-        sum += f.segment
-            ? mag(f.b - f.a)
-            : (mag(f.b - f.a) + mag(f.c - f.b) + mag(f.a - f.c))/3;
-    }
-    return faces.size() ? sum/faces.size() : 0;
-}
-
-
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-Foam::vector Foam::barrierContact::nearest(const face& f, const vector& x) const
-{
-    return f.segment
-        ? nearestOnSegment(f.a, f.b, x)
-        : nearestOnTriangle(f.a, f.b, f.c, x);
-}
-
 
 void Foam::barrierContact::readSettings
 (
@@ -132,10 +38,13 @@ void Foam::barrierContact::readSettings
     }
     if (!(hMean > 0) && !dict.found("dHat", keyType::LITERAL))
     {
+        const bool zones = !zoneNames_.empty();
         badEntry
         (
-            dict, "patches", entryText(dict, "patches"),
-            "patches with faces (these have none, so dHat has no default)"
+            dict, zones ? "zones" : "patches",
+            entryText(dict, zones ? "zones" : "patches"),
+            "patches or zones with faces (these have none, so dHat has no"
+            " default)"
         );
     }
     dHat_ = getPositive(dict, "dHat", 0.25*hMean);
@@ -331,10 +240,16 @@ Foam::barrierContact::barrierContact
     nWithin_(0),
     nExamined_(0),
     forceTime_(0),
-    nForceCalls_(0)
+    nForceCalls_(0),
+    frictionWork_(0),
+    nWithinSum_(0),
+    nExaminedSum_(0)
 {
     using namespace dictionaryChecks;
     const polyBoundaryMesh& pbm = mesh.boundaryMesh();
+    const faceZoneMesh& fzm = mesh.faceZones();
+    const bool hasPatches = dict.found("patches", keyType::LITERAL);
+    const bool hasZones = dict.found("zones", keyType::LITERAL);
 
     // The patches, checked
     wordList allowed;
@@ -348,9 +263,30 @@ Foam::barrierContact::barrierContact
     OStringStream allowedText;
     allowedText << "a list of boundary patches of the mesh (not empty or"
         << " processor): " << allowed;
-    patchNames_ = getAs<wordList>(dict, "patches", allowedText.str());
-    if (patchNames_.empty())
+    OStringStream allowedZones;
+    allowedZones << "a list of faceZones of the mesh: " << fzm.names();
+    if (!hasPatches && !hasZones)
     {
+        missingEntry
+        (
+            dict, "patches",
+            allowedText.str() + "; or 'zones', " + allowedZones.str()
+        );
+    }
+    if (hasPatches || !hasZones)
+    {
+        patchNames_ = getAs<wordList>(dict, "patches", allowedText.str());
+    }
+    if (hasZones)
+    {
+        zoneNames_ = getAs<wordList>(dict, "zones", allowedZones.str());
+    }
+    if (patchNames_.empty() && zoneNames_.empty())
+    {
+        if (hasZones)
+        {
+            badEntry(dict, "zones", "()", allowedZones.str());
+        }
         badEntry(dict, "patches", "()", allowedText.str());
     }
     labelList patchIDs(patchNames_.size());
@@ -367,57 +303,88 @@ Foam::barrierContact::barrierContact
         }
         patchIDs[k] = id;
     }
+    labelList zoneIDs(zoneNames_.size());
+    forAll(zoneNames_, z)
+    {
+        const label id = fzm.findZoneID(zoneNames_[z]);
+        if (id < 0)
+        {
+            badEntry(dict, "zones", zoneNames_[z], allowedZones.str());
+        }
+        zoneIDs[z] = id;
+    }
 
-    // This rank's faces: a, b, c, outward normal per face, and the patch
+    // This rank's faces: a, b, c, outward normal per face, and the surface
     const bool twoD = (view.dim() == 2);
     const pointField& pts = mesh.points();
     List<vector> local;
     labelList localPatch;
     DynamicList<vector> dl;
     DynamicList<label> dp;
+    auto addFace = [&](const Foam::face& f, const vector& S, const label k)
+    {
+        const vector n = S/max(mag(S), VSMALL);
+        if (twoD)
+        {
+            // The face's trace in the solution plane: its two points
+            // farthest apart once projected
+            scalar best = -1;
+            vector a(Zero), b(Zero);
+            forAll(f, m)
+            {
+                for (label q = m + 1; q < f.size(); ++q)
+                {
+                    const vector pm = view.inPlane(pts[f[m]]);
+                    const vector pq = view.inPlane(pts[f[q]]);
+                    if (magSqr(pq - pm) > best)
+                    {
+                        best = magSqr(pq - pm);
+                        a = pm;
+                        b = pq;
+                    }
+                }
+            }
+            dl.append(a); dl.append(b); dl.append(b);
+            dl.append(view.inPlane(n));
+            dp.append(k);
+        }
+        else
+        {
+            for (label m = 1; m + 1 < f.size(); ++m)
+            {
+                dl.append(pts[f[0]]);
+                dl.append(pts[f[m]]);
+                dl.append(pts[f[m + 1]]);
+                dl.append(n);
+                dp.append(k);
+            }
+        }
+    };
     forAll(patchIDs, k)
     {
         const polyPatch& pp = pbm[patchIDs[k]];
         const vectorField Sf(pp.faceAreas());
         forAll(pp, i)
         {
-            const Foam::face& f = pp[i];
-            const vector n = Sf[i]/max(mag(Sf[i]), VSMALL);
-            if (twoD)
+            addFace(pp[i], Sf[i], k);
+        }
+    }
+    forAll(zoneIDs, z)
+    {
+        const label k = patchNames_.size() + z;
+        for (const label fi : fzm[zoneIDs[z]])
+        {
+            if (!mesh.isInternalFace(fi))
             {
-                // The face's trace in the solution plane: its two points
-                // farthest apart once projected
-                scalar best = -1;
-                vector a(Zero), b(Zero);
-                forAll(f, m)
-                {
-                    for (label q = m + 1; q < f.size(); ++q)
-                    {
-                        const vector pm = view.inPlane(pts[f[m]]);
-                        const vector pq = view.inPlane(pts[f[q]]);
-                        if (magSqr(pq - pm) > best)
-                        {
-                            best = magSqr(pq - pm);
-                            a = pm;
-                            b = pq;
-                        }
-                    }
-                }
-                dl.append(a); dl.append(b); dl.append(b);
-                dl.append(view.inPlane(n));
-                dp.append(k);
+                // A boundary face: not an empty one; a processor face
+                // from its owner rank only (the ranks gather the faces)
+                const polyPatch& pp = pbm[pbm.whichPatch(fi)];
+                if (isA<emptyPolyPatch>(pp)) continue;
+                const processorPolyPatch* proc =
+                    isA<processorPolyPatch>(pp);
+                if (proc && !proc->owner()) continue;
             }
-            else
-            {
-                for (label m = 1; m + 1 < f.size(); ++m)
-                {
-                    dl.append(pts[f[0]]);
-                    dl.append(pts[f[m]]);
-                    dl.append(pts[f[m + 1]]);
-                    dl.append(n);
-                    dp.append(k);
-                }
-            }
+            addFace(mesh.faces()[fi], mesh.faceAreas()[fi], k);
         }
     }
     local.transfer(dl);
@@ -461,8 +428,12 @@ Foam::barrierContact::barrierContact
     readSettings(dict, meanEdge(faces_));
     buildCellFaces();
 
-    Info<< "Barrier contact on patches " << patchNames_ << ": "
-        << faces_.size() << (twoD ? " segments" : " triangles") << ", dHat "
+    Info<< "Barrier contact on patches " << patchNames_;
+    if (zoneNames_.size())
+    {
+        Info<< " and faceZones " << zoneNames_;
+    }
+    Info<< ": " << faces_.size() << (twoD ? " segments" : " triangles") << ", dHat "
         << dHat_ << " m, stiffness " << stiffness_ << " (kappa_p = stiffness"
         << " E V0_p/dHat^2), friction " << friction_ << ", epsV " << epsV_
         << " m/s; " << returnReduce(nContactCells(), sumOp<label>())
@@ -475,11 +446,13 @@ Foam::barrierContact::barrierContact
     const mpmMeshView& view,
     const List<face>& faces,
     const wordList& patchNames,
-    const dictionary& dict
+    const dictionary& dict,
+    const wordList& zoneNames
 )
 :
     mesh_(view),
     patchNames_(patchNames),
+    zoneNames_(zoneNames),
     faces_(faces),
     dHat_(0),
     stiffness_(1),
@@ -489,7 +462,10 @@ Foam::barrierContact::barrierContact
     nWithin_(0),
     nExamined_(0),
     forceTime_(0),
-    nForceCalls_(0)
+    nForceCalls_(0),
+    frictionWork_(0),
+    nWithinSum_(0),
+    nExaminedSum_(0)
 {
     readSettings(dict, meanEdge(faces_));
     buildCellFaces();
