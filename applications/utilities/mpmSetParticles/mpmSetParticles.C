@@ -16,7 +16,11 @@ Description
     1D) or with perCell^dim particles per cell (perCell^2 on triangles; not
     for tetrahedra), each with a material of constant/mpmProperties, a
     velocity (uniform, plus an optional sine profile) and an initial
-    deformation gradient.
+    deformation gradient F.  The region is the body as it is now, deformed
+    by F: a particle's current volume is spacing^dim (or its share of the
+    cell), its reference volume V0 that over det F, and its mass rho V0
+    with rho the material's (reference) density: a body compressed to
+    F = 0.75 I fills its region at 1/det F = 2.37 times rho.
 
 Usage
     system/mpmSetParticlesDict:
@@ -331,6 +335,11 @@ int main(int argc, char *argv[])
             badEntry(d, "F", Foam::name(F0) + " (det F = "
                 + Foam::name(det(F0)) + ")", allowedF);
         }
+        // The region is the body as it is now, deformed by F0: each
+        // particle's current volume is its share of the region, its
+        // reference volume that over det F0, its mass rho (the reference
+        // density) times the reference volume
+        const scalar J0 = det(F0);
         vector sineA(Zero), sineK(Zero);
         if (const dictionary* sd = d.findDict("velocitySine", keyType::LITERAL))
         {
@@ -418,7 +427,7 @@ int main(int argc, char *argv[])
                     continue;
                 }
                 guess = c;
-                const scalar V0 = std::pow(s, dim);
+                const scalar V0 = std::pow(s, dim)/J0;
                 P.append(x, velocity(x), F0, rho*V0, V0, mat, c);
             }
         }
@@ -500,7 +509,7 @@ int main(int argc, char *argv[])
                 for (vector x : pts)
                 {
                     x = ((I - Q) & x) + mid;
-                    const scalar V0 = Vc/pts.size();
+                    const scalar V0 = Vc/pts.size()/J0;
                     P.append(x, velocity(x), F0, rho*V0, V0, mat, c);
                 }
             }
