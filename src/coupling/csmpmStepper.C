@@ -34,6 +34,13 @@ Foam::csmpmStepper::stepOrderNames
     { stepOrder::mpmFirst, "mpmFirst" },
 });
 
+const Foam::Enum<Foam::csmpmStepper::gasOrder>
+Foam::csmpmStepper::gasOrderNames
+({
+    { gasOrder::B1B0, "B1B0" },
+    { gasOrder::B2B1, "B2B1" },
+});
+
 
 namespace
 {
@@ -267,12 +274,50 @@ Foam::csmpmStepper::csmpmStepper
     Kg_.setSize(P_.size());
     Vold_.setSize(P_.size());
     checkInlets(shockMpmDict);
+    gasOrder_ = dictionaryChecks::getEnum
+    (
+        cDict, "gasPressureOrder", gasOrderNames, gasOrder::B1B0
+    );
+    if (gasOrder_ == gasOrder::B2B1) setGasB2B1(cDict);
 
     Info<< "CSMPM coupling: " << returnReduce(P_.size(), sumOp<label>())
         << " particles, "
         << view_.nVertices() << " MPM nodes on the gas lattice, order "
         << stepOrderNames[order_] << ", kernel " << solver_.kernel().type()
-        << nl;
+        << ", gas pressure order " << gasOrderNames[gasOrder_] << nl;
+}
+
+
+void Foam::csmpmStepper::setGasB2B1(const dictionary& cDict)
+{
+    if (Pstream::parRun())
+    {
+        FatalIOErrorInFunction(cDict)
+            << cDict.name() << ": gasPressureOrder B2B1 runs serially"
+            << " only." << nl
+            << "    allowed with -parallel: B1B0" << exit(FatalIOError);
+    }
+    if (mesh_.nCells() != mesh_.nLattice())
+    {
+        FatalIOErrorInFunction(cDict)
+            << cDict.name() << ": gasPressureOrder B2B1 needs a mesh that"
+            << " fills its lattice's box (" << mesh_.nCells() << " cells of "
+            << mesh_.nLattice() << " lattice positions)." << nl
+            << "    allowed on this mesh: B1B0" << exit(FatalIOError);
+    }
+    // Periodic directions wrap (every line of a direction alike in a box)
+    const PtrList<gasBoundary>& bcs = op_.boundaries();
+    bool periodic[3] = {false, false, false};
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!mesh_.active(d) || mesh_.segments(d).empty()) continue;
+        periodic[d] = bcs[mesh_.segments(d)[0].lowPatch].kindOf()
+            == gasBoundary::kind::periodic;
+    }
+    gasB2B1_.reset(new gasB2B1Operator(mesh_, periodic, cells_));
+    openLat_.assign(mesh_.nLattice(), 1.0);
+    Info<< "    gas B2B1: " << gasB2B1_->nVertices()
+        << " velocity nodes" << nl;
 }
 
 
