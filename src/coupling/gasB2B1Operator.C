@@ -292,7 +292,8 @@ void Foam::gasB2B1Operator::setStep
 {
     const label nV = nVertices();
     const std::vector<double>* FW[3] = {&W_[0], &W_[1], &W_[2]};
-    std::vector<double> mass, mom;
+    std::vector<double>& mass = mass_;
+    std::vector<double>& mom = mom_;
     forward(q[0], mass, FW);
     forward(open, theta_, FW);
     C_.resize(nV);
@@ -334,6 +335,8 @@ void Foam::gasB2B1Operator::setStep
 }
 
 
+// (3.37), the gas's rows: y += G^T C G x (less the Jacobi diagonal that
+// the caller's LDU product already applied)
 void Foam::gasB2B1Operator::addProduct
 (
     const std::vector<double>& x,

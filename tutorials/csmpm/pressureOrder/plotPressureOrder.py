@@ -15,6 +15,7 @@ import sys
 
 import matplotlib
 matplotlib.use("Agg")
+import matplotlib.ticker
 import matplotlib.pyplot as plt
 import numpy as np
 
@@ -56,6 +57,11 @@ def main():
                             textcoords="offset points",
                             xytext=(0, 8 if kind == "B1B0" else -14),
                             color=c, fontsize=8, ha="center")
+    ns = sorted(set(x[0] for r in rows.values() for x in r))
+    for a in (ax, bx):
+        a.set_xticks(ns)
+        a.set_xticklabels([str(x) for x in ns])
+        a.xaxis.set_minor_locator(matplotlib.ticker.NullLocator())
     if "B1B0" in rows and "B2B1" in rows:
         a = dict((x[0], x[1]) for x in rows["B1B0"])
         b = dict((x[0], x[1]) for x in rows["B2B1"])
