@@ -197,7 +197,7 @@ bool Foam::csmpmStepper::pressureStep
                 rhoF_[d][f] = rhoF;
                 uStarF_[d][f] = uS;
                 const double a = open[f];
-                if (a <= 0) return;
+                if (a <= 0 || b2b1) return;
                 const label k = unknownOf_[i];
                 gsys.coupleRemote(k, slot, a*A/(rhoF*dx));
                 if (low) gsys.source[k] += a*A*uS/dt;

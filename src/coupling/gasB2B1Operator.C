@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "gasB2B1Operator.H"
+#include "Pstream.H"
 #include <cmath>
 #include <algorithm>
 #include <map>
@@ -137,18 +138,21 @@ void Foam::gasB2B1Operator::table1D
 Foam::gasB2B1Operator::gasB2B1Operator
 (
     const cartesianMesh& mesh,
+    const label N[3],
     const bool periodic[3],
-    const std::vector<label>& cells
+    const std::vector<label>& cells,
+    const std::vector<label>& global
 )
 :
-    latOf_(cells)
+    latOf_(global),
+    local_(cells)
 {
     V_ = mesh.cellVolume();
     for (label d = 0; d < 3; ++d)
     {
         active_[d] = mesh.active(d);
         periodic_[d] = active_[d] && periodic[d];
-        nc_[d] = mesh.n(d);
+        nc_[d] = active_[d] ? N[d] : 1;
         A_[d] = V_/mesh.dx(d);
         if (active_[d])
         {
@@ -177,7 +181,18 @@ Foam::gasB2B1Operator::gasB2B1Operator
             M2_[d][e] = M_[d][e]*M_[d][e];
         }
     }
-    const std::vector<double> ones(size_t(nc_[0]*nc_[1]*nc_[2]), 1.0);
+    nGlobal_ = nc_[0]*nc_[1]*nc_[2];
+    if (Pstream::parRun())
+    {
+        allIdx_.setSize(Pstream::nProcs());
+        labelList& mine = allIdx_[Pstream::myProcNo()];
+        mine.setSize(label(latOf_.size()));
+        forAll(mine, k) mine[k] = latOf_[k];
+        Pstream::gatherList(allIdx_);
+        Pstream::scatterList(allIdx_);
+        all_.setSize(Pstream::nProcs());
+    }
+    const std::vector<double> ones(size_t(nGlobal_), 1.0);
     const std::vector<double>* F[3] = {&W_[0], &W_[1], &W_[2]};
     forward(ones, Wsum_, F);
 }
@@ -276,6 +291,33 @@ void Foam::gasB2B1Operator::backward
 }
 
 
+void Foam::gasB2B1Operator::toGlobal
+(
+    const std::vector<double>& v,
+    std::vector<double>& global
+) const
+{
+    global.resize(size_t(nGlobal_));
+    const label n = label(latOf_.size());
+    if (!Pstream::parRun())
+    {
+        for (label k = 0; k < n; ++k) global[latOf_[k]] = v[k];
+        return;
+    }
+    scalarList& mine = all_[Pstream::myProcNo()];
+    mine.setSize(n);
+    for (label k = 0; k < n; ++k) mine[k] = v[k];
+    Pstream::gatherList(all_);
+    Pstream::scatterList(all_);
+    forAll(all_, p)
+    {
+        const labelList& idx = allIdx_[p];
+        const scalarList& val = all_[p];
+        forAll(idx, k) global[idx[k]] = val[k];
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 // (3.35) into (3.37): the gas's lumped masses, C = theta^2/M, the source
@@ -294,8 +336,18 @@ void Foam::gasB2B1Operator::setStep
     const std::vector<double>* FW[3] = {&W_[0], &W_[1], &W_[2]};
     std::vector<double>& mass = mass_;
     std::vector<double>& mom = mom_;
-    forward(q[0], mass, FW);
-    forward(open, theta_, FW);
+    // The whole lattice's advected gas and open fractions
+    const label n = label(latOf_.size());
+    u_.resize(n);
+    for (label c = 0; c < 4; ++c)
+    {
+        for (label k = 0; k < n; ++k) u_[k] = q[c][local_[k]];
+        toGlobal(u_, qg_[c]);
+    }
+    for (label k = 0; k < n; ++k) u_[k] = open[local_[k]];
+    toGlobal(u_, openG_);
+    forward(qg_[0], mass, FW);
+    forward(openG_, theta_, FW);
     C_.resize(nV);
     for (label v = 0; v < nV; ++v)
     {
@@ -303,12 +355,11 @@ void Foam::gasB2B1Operator::setStep
         theta_[v] /= Wsum_[v];
         C_[v] = theta_[v]*theta_[v]/mass[v];
     }
-    const label n = label(latOf_.size());
     diag_.assign(n, 0.0);
     for (label d = 0; d < 3; ++d)
     {
         if (!active_[d]) continue;
-        forward(q[1 + d], mom, FW);
+        forward(qg_[1 + d], mom, FW);
         // theta u* A/dt at each vertex
         for (label v = 0; v < nV; ++v)
         {
@@ -345,8 +396,7 @@ void Foam::gasB2B1Operator::addProduct
 {
     const label n = label(latOf_.size());
     const label nV = nVertices();
-    x_.resize(size_t(nc_[0]*nc_[1]*nc_[2]));
-    for (label k = 0; k < n; ++k) x_[latOf_[k]] = x[k];
+    toGlobal(x, x_);
     for (label d = 0; d < 3; ++d)
     {
         if (!active_[d]) continue;
