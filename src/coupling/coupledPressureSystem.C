@@ -5,6 +5,7 @@
 
 #include "coupledPressureSystem.H"
 #include "mpmParallel.H"
+#include "gasB2B1Operator.H"
 #include "PstreamReduceOps.H"
 #include <cmath>
 #include <numeric>
@@ -166,6 +167,7 @@ void Foam::coupledPressureSystem::multiply
     // The gas's LDU product (its diag holds the solid's Jacobi diagonal
     // too: take that back out, then add T^T M^-1 T x exactly)
     gas.multiply(x, y);
+    if (gasB2B1) gasB2B1->addProduct(x, y);
     const label nR = nRows();
     if (nR == 0 && !par) return;
     applyT(x, u_);

@@ -138,6 +138,7 @@ bool Foam::csmpmStepper::pressureStep
 
     // (3.21) on the passable share of each face; boundary faces carry
     // their velocity for both phases
+    const bool b2b1 = gasB2B1_.valid();
     for (label d = 0; d < 3; ++d)
     {
         if (!mesh_.active(d)) continue;
@@ -167,7 +168,8 @@ bool Foam::csmpmStepper::pressureStep
                 rhoF_[d][f] = rhoF;
                 uStarF_[d][f] = uS;
                 const double a = open[f];
-                if (a <= 0) return;
+                // (B2B1: the gas's couplings are gasB2B1Operator's)
+                if (a <= 0 || b2b1) return;
                 const label kl = unknownOf_[l], kr = unknownOf_[r];
                 gsys.couple(kl, kr, a*A/(rhoF*dx));
                 gsys.source[kl] -= a*A*uS/dt;
@@ -195,7 +197,7 @@ bool Foam::csmpmStepper::pressureStep
                 rhoF_[d][f] = rhoF;
                 uStarF_[d][f] = uS;
                 const double a = open[f];
-                if (a <= 0) return;
+                if (a <= 0 || b2b1) return;
                 const label k = unknownOf_[i];
                 gsys.coupleRemote(k, slot, a*A/(rhoF*dx));
                 if (low) gsys.source[k] += a*A*uS/dt;
@@ -253,6 +255,19 @@ bool Foam::csmpmStepper::pressureStep
                 gsys.source[unknownOf_[last]] -= A*uHi/dt;
             }
         }
+    }
+
+    // gasPressureOrder B2B1: the gas's velocities on the vertices (3.32),
+    // eliminated (3.35), in place of the face couplings above (the
+    // boundary faces' fluxes stay)
+    if (b2b1)
+    {
+        for (const label i : cells_)
+        {
+            openLat_[i] = max(1 - phiCell_[i], gasVolumeMin_);
+        }
+        gasB2B1_->setStep(Ustar_.q, openLat_, dt, g_, gsys.source, gsys.diag);
+        sys_.gasB2B1 = gasB2B1_.get();
     }
 
     // The solid's part: T = W^T G over the faces the solid blocks

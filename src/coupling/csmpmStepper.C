@@ -34,6 +34,13 @@ Foam::csmpmStepper::stepOrderNames
     { stepOrder::mpmFirst, "mpmFirst" },
 });
 
+const Foam::Enum<Foam::csmpmStepper::gasOrder>
+Foam::csmpmStepper::gasOrderNames
+({
+    { gasOrder::B1B0, "B1B0" },
+    { gasOrder::B2B1, "B2B1" },
+});
+
 
 namespace
 {
@@ -267,12 +274,83 @@ Foam::csmpmStepper::csmpmStepper
     Kg_.setSize(P_.size());
     Vold_.setSize(P_.size());
     checkInlets(shockMpmDict);
+    gasOrder_ = dictionaryChecks::getEnum
+    (
+        cDict, "gasPressureOrder", gasOrderNames, gasOrder::B1B0
+    );
+    if (gasOrder_ == gasOrder::B2B1) setGasB2B1(cDict);
 
     Info<< "CSMPM coupling: " << returnReduce(P_.size(), sumOp<label>())
         << " particles, "
         << view_.nVertices() << " MPM nodes on the gas lattice, order "
         << stepOrderNames[order_] << ", kernel " << solver_.kernel().type()
-        << nl;
+        << ", gas pressure order " << gasOrderNames[gasOrder_] << nl;
+}
+
+
+void Foam::csmpmStepper::setGasB2B1(const dictionary& cDict)
+{
+    // The whole lattice: its size, and the global index of each own cell
+    // (-parallel: the rank's box's offset in it)
+    label N[3], off[3] = {0, 0, 0};
+    for (label d = 0; d < 3; ++d) N[d] = mesh_.n(d);
+    if (Pstream::parRun())
+    {
+        const latticeRing& ring = lattice_.ring();
+        for (label d = 0; d < 3; ++d)
+        {
+            N[d] = ring.N(d);
+            off[d] = ring.off(d);
+        }
+    }
+    const label nAll = returnReduce(mesh_.nCells(), sumOp<label>());
+    if
+    (
+        nAll != N[0]*N[1]*N[2]
+     || !returnReduce(mesh_.nCells() == mesh_.nLattice(), andOp<bool>())
+    )
+    {
+        FatalIOErrorInFunction(cDict)
+            << cDict.name() << ": gasPressureOrder B2B1 needs a mesh that"
+            << " fills its lattice's box (" << nAll << " cells of "
+            << N[0]*N[1]*N[2] << " lattice positions)." << nl
+            << "    allowed on this mesh: B1B0" << exit(FatalIOError);
+    }
+    std::vector<label> global(cells_.size());
+    for (size_t k = 0; k < cells_.size(); ++k)
+    {
+        const label i = cells_[k];
+        const label a = i % mesh_.n(0);
+        const label b = (i/mesh_.n(0)) % mesh_.n(1);
+        const label c = i/(mesh_.n(0)*mesh_.n(1));
+        global[k] = (a + off[0]) + N[0]*((b + off[1]) + N[1]*(c + off[2]));
+    }
+    // Periodic directions wrap (every line of a direction alike in a box;
+    // a rank whose lines end on processor patches at both ends cannot
+    // tell, another can)
+    const PtrList<gasBoundary>& bcs = op_.boundaries();
+    bool periodic[3] = {false, false, false};
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!mesh_.active(d)) continue;
+        for (const auto& s : mesh_.segments(d))
+        {
+            if (s.lowGhost < 0)
+            {
+                periodic[d] = bcs[s.lowPatch].kindOf()
+                    == gasBoundary::kind::periodic;
+                break;
+            }
+        }
+        if (Pstream::parRun()) reduce(periodic[d], orOp<bool>());
+    }
+    gasB2B1_.reset
+    (
+        new gasB2B1Operator(mesh_, N, periodic, cells_, global)
+    );
+    openLat_.assign(mesh_.nLattice(), 1.0);
+    Info<< "    gas B2B1: " << gasB2B1_->nVertices()
+        << " velocity nodes" << nl;
 }
 
 
