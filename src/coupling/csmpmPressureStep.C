@@ -614,6 +614,7 @@ bool Foam::csmpmStepper::pressureStep
         mergeCoveredCells(out);
         lastRepaired_ = repairNearSolid(out);
     }
+    lastRepaired_ += repairAnywhere(out);
 
     bool ok = true;
     for (const label i : cells_)
