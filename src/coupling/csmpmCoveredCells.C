@@ -326,4 +326,165 @@ Foam::label Foam::csmpmStepper::mergeAndRepairParallel(gasState& out) const
 }
 
 
+// A gas cell anywhere that the coupled step left inadmissible (after the
+// merges and the repairs near the solid): repaired by the same rule,
+// pooled with its face neighbour holding the most gas (conservative), the
+// cells in lattice order.  The gas that the blast ahead of a bullet drives
+// out of a muzzle expands round the muzzle's edge: the cell at the wall
+// behind the edge, emptied by the flow turning away from it, reached a
+// negative pressure in the pressure step at any time step (csmpm/bullet2D,
+// the light bullet at 80 per unit length, t = 0.478, before its nose left
+// the bore).  Returns the cells repaired (0, and the state untouched,
+// where every cell is admissible)
+Foam::label Foam::csmpmStepper::repairAnywhere(gasState& out) const
+{
+    if (par_.valid()) return repairAnywhereParallel(out);
+    std::vector<label> bad;
+    for (const label i : cells_)
+    {
+        if (!out.admissible(i, gamma_)) bad.push_back(i);
+    }
+    if (bad.empty()) return 0;
+    std::sort(bad.begin(), bad.end());
+    return repairNear
+    (
+        bad, mesh_, latticeNeighbour(),
+        [this](label u) { return max(1 - lattice_.phi(u), gasVolumeMin_); },
+        gamma_, out
+    );
+}
+
+
+// The same across the ranks: the global indices of the inadmissible cells
+// to every rank, each rank's cells within two face steps of one (those a
+// repair reads or changes) gathered from all ranks, the serial rule run on
+// the union in global (the serial lattice's) order on every rank, each
+// rank keeping its own cells' results
+Foam::label Foam::csmpmStepper::repairAnywhereParallel(gasState& out) const
+{
+    const latticeRing& ring = lattice_.ring();
+    const label nLat = mesh_.nLattice();
+    label sh[3], n[3], off[3];
+    for (label d = 0; d < 3; ++d)
+    {
+        sh[d] = ring.sh(d);
+        n[d] = mesh_.n(d);
+        off[d] = ring.off(d);
+    }
+    auto globalOfCell = [&](label i)
+    {
+        label c[3];
+        mesh_.ijk(i, c[0], c[1], c[2]);
+        return ring.globalOf(c[0] + sh[0], c[1] + sh[1], c[2] + sh[2]);
+    };
+
+    List<labelList> badAll(Pstream::nProcs());
+    {
+        DynamicList<label> b;
+        for (const label i : cells_)
+        {
+            if (!out.admissible(i, gamma_)) b.append(globalOfCell(i));
+        }
+        badAll[Pstream::myProcNo()].transfer(b);
+    }
+    Pstream::gatherList(badAll);
+    Pstream::scatterList(badAll);
+    std::vector<label> badG;
+    for (const labelList& l : badAll)
+    {
+        for (const label g : l) badG.push_back(g);
+    }
+    if (badG.empty()) return 0;
+    std::sort(badG.begin(), badG.end());
+
+    const label N[3] = {ring.N(0), ring.N(1), ring.N(2)};
+    const label gStride[3] = {1, N[0], N[0]*N[1]};
+
+    // The rank's cells within two face steps of a bad cell
+    const label r2 = 2;
+    std::vector<char> mark(nLat, 0);
+    for (const label g : badG)
+    {
+        label c[3];
+        for (label d = 0; d < 3; ++d) c[d] = (g/gStride[d]) % N[d];
+        // in the rank's lattice coordinates (global = own + off)
+        label lo[3], hi[3];
+        for (label d = 0; d < 3; ++d)
+        {
+            const label a = c[d] - off[d];
+            lo[d] = max(a - (mesh_.active(d) ? r2 : 0), label(0));
+            hi[d] = min(a + (mesh_.active(d) ? r2 : 0), n[d] - 1);
+        }
+        for (label k = lo[2]; k <= hi[2]; ++k)
+        for (label j = lo[1]; j <= hi[1]; ++j)
+        for (label i = lo[0]; i <= hi[0]; ++i)
+        {
+            const label a0 = c[0] - off[0], a1 = c[1] - off[1],
+                a2 = c[2] - off[2];
+            if (mag(i - a0) + mag(j - a1) + mag(k - a2) > r2) continue;
+            const label idx = i + n[0]*(j + n[1]*k);
+            if (mesh_.cellAt()[idx] >= 0) mark[idx] = 1;
+        }
+    }
+    DynamicList<scalar> mine;
+    DynamicList<label> sent;
+    for (label i = 0; i < nLat; ++i)
+    {
+        if (!mark[i]) continue;
+        mine.append(scalar(globalOfCell(i)));
+        mine.append(lattice_.phi(i));
+        for (int q = 0; q < 5; ++q) mine.append(out.q[q][i]);
+        sent.append(i);
+    }
+    List<List<scalar>> all(Pstream::nProcs());
+    all[Pstream::myProcNo()].transfer(mine);
+    Pstream::gatherList(all);
+    Pstream::scatterList(all);
+
+    label nU = 0;
+    for (const List<scalar>& l : all) nU += l.size()/7;
+    std::vector<label> gOf(nU);
+    std::vector<double> phi(nU);
+    gasState U;
+    U.resize(nU);
+    std::unordered_map<label, label> at;
+    at.reserve(2*nU);
+    label mineStart = 0;
+    {
+        label u = 0;
+        forAll(all, r)
+        {
+            if (r == Pstream::myProcNo()) mineStart = u;
+            const List<scalar>& l = all[r];
+            for (label k = 0; k + 6 < l.size(); k += 7, ++u)
+            {
+                gOf[u] = label(std::llround(l[k]));
+                phi[u] = l[k + 1];
+                for (int q = 0; q < 5; ++q) U.q[q][u] = l[k + 2 + q];
+                at[gOf[u]] = u;
+            }
+        }
+    }
+    auto nbr = [&](label u, label d, label h) -> label
+    {
+        const label g = gOf[u];
+        const label c = (g/gStride[d]) % N[d];
+        if ((h == 0 && c == 0) || (h == 1 && c == N[d] - 1)) return -1;
+        const auto it = at.find(g + (h ? 1 : -1)*gStride[d]);
+        // (a lattice position without a cell: no neighbour)
+        return it == at.end() ? -1 : it->second;
+    };
+    auto open = [&](label u) { return max(1 - phi[u], gasVolumeMin_); };
+    std::vector<label> cells;
+    for (const label g : badG) cells.push_back(at.at(g));
+    const label nRepaired = repairNear(cells, mesh_, nbr, open, gamma_, U);
+
+    forAll(sent, k)
+    {
+        for (int q = 0; q < 5; ++q) out.q[q][sent[k]] = U.q[q][mineStart + k];
+    }
+    return nRepaired;
+}
+
+
 // ************************************************************************* //

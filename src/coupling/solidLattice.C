@@ -172,6 +172,17 @@ Foam::solidLattice::solidLattice
         {
             VfaceE_[d].assign(ring_->nFacesE(d), 0.0);
         }
+        // Which cells of the grown box are mesh cells of some rank (the
+        // deposit's hats give nothing to the others, as in serial)
+        inMeshE_.assign(ring_->nCellsE(), 0.0);
+        for (label i = 0; i < lat_.nLattice(); ++i)
+        {
+            if (lat_.cellAt()[i] >= 0) inMeshE_[ring_->cellOf(i)] = 1;
+        }
+        {
+            std::vector<double>* noFaces[3] = {nullptr, nullptr, nullptr};
+            ring_->combine({&inMeshE_}, {false}, noFaces);
+        }
         // The neighbour cell of each ghost slot in the grown box
         phiSlot_.assign(lat_.nGhostSlots(), 0.0);
         slotCellE_.assign(lat_.nGhostSlots(), -1);
@@ -257,18 +268,39 @@ void Foam::solidLattice::deposit
             hat(s[e] - 0.5, n[e], c0[e], tc[e]);
         }
 
-        // Cells
+        // Cells.  A hat corner on a lattice cell outside the mesh (a wall
+        // inside the lattice's box: a bore, a step) gives its share to
+        // the corners in the mesh, as the hat is clamped at the lattice's
+        // ends: no volume is lost, a body that fills a channel covers the
+        // cells at its walls wholly (else 1/8 of them stayed open to the
+        // gas, and the pressure work there made energy)
+        label cIdx[8];
+        double cW[8];
+        double lost = 0;
         for (label a = 0; a < 2; ++a)
         for (label b = 0; b < 2; ++b)
         for (label k = 0; k < 2; ++k)
         {
-            const double w =
+            const label q = 4*a + 2*b + k;
+            cW[q] =
                 (a ? tc[0] : 1 - tc[0])*(b ? tc[1] : 1 - tc[1])
                *(k ? tc[2] : 1 - tc[2]);
+            cIdx[q] = (c0[0] + a) + n[0]*((c0[1] + b) + n[1]*(c0[2] + k));
+            if (cW[q] > 0 && (cIdx[q] >= nLat || cellAt[cIdx[q]] < 0))
+            {
+                lost += cW[q];
+                cW[q] = 0;
+            }
+        }
+        if (lost > 0 && lost < 1)
+        {
+            for (double& w : cW) w /= 1 - lost;
+        }
+        for (label q = 0; q < 8; ++q)
+        {
+            const double w = cW[q];
             if (w <= 0) continue;
-            const label idx =
-                (c0[0] + a) + n[0]*((c0[1] + b) + n[1]*(c0[2] + k));
-            if (idx >= nLat || cellAt[idx] < 0) continue;
+            const label idx = cIdx[q];
             if (!cellMark_[idx])
             {
                 cellMark_[idx] = 1;
@@ -287,21 +319,50 @@ void Foam::solidLattice::deposit
             double tf[3];
             for (label e = 0; e < 3; ++e) { f0[e] = c0[e]; tf[e] = tc[e]; }
             hat(s[d], n[d] + 1, f0[d], tf[d]);
+            // (as the cells: the shares of corners outside the mesh across
+            // the face's line go to those in it; along d, the face at a
+            // wall inside the box is the high face of the cell below it)
+            label fIdx[8];
+            bool fHigh[8];
+            double fW[8];
+            double fLost = 0;
             for (label a = 0; a < 2; ++a)
             for (label b = 0; b < 2; ++b)
             for (label k = 0; k < 2; ++k)
             {
-                const double w =
+                const label q = 4*a + 2*b + k;
+                fW[q] =
                     (a ? tf[0] : 1 - tf[0])*(b ? tf[1] : 1 - tf[1])
                    *(k ? tf[2] : 1 - tf[2]);
-                if (w <= 0) continue;
                 label ijk[3] = {f0[0] + a, f0[1] + b, f0[2] + k};
                 // The face at integer a along d is the low face of cell a,
                 // or the high face of cell a - 1 at the far end
                 bool high = false;
                 if (ijk[d] >= n[d]) { ijk[d] = n[d] - 1; high = true; }
-                const label idx = ijk[0] + n[0]*(ijk[1] + n[1]*ijk[2]);
-                if (idx >= nLat || cellAt[idx] < 0) continue;
+                label idx = ijk[0] + n[0]*(ijk[1] + n[1]*ijk[2]);
+                if (!high && ijk[d] > 0 && idx < nLat && cellAt[idx] < 0)
+                {
+                    const label below = idx - lat_.stride(d);
+                    if (cellAt[below] >= 0) { idx = below; high = true; }
+                }
+                fIdx[q] = idx;
+                fHigh[q] = high;
+                if (fW[q] > 0 && (idx >= nLat || cellAt[idx] < 0))
+                {
+                    fLost += fW[q];
+                    fW[q] = 0;
+                }
+            }
+            if (fLost > 0 && fLost < 1)
+            {
+                for (double& w : fW) w /= 1 - fLost;
+            }
+            for (label q = 0; q < 8; ++q)
+            {
+                const double w = fW[q];
+                if (w <= 0) continue;
+                const label idx = fIdx[q];
+                const bool high = fHigh[q];
                 const label f = lat_.lowFaceOf(d)[idx] + (high ? 1 : 0);
                 if (!faceMark_[d][f])
                 {

@@ -57,19 +57,41 @@ void Foam::solidLattice::depositParallel
             hat(s[e] - 0.5, N[e], c0[e], tc[e]);
         }
 
+        // (the corners outside the mesh give their shares to the others,
+        // as in the serial deposit)
+        label cIdx[8];
+        double cW[8];
+        double lost = 0;
         for (label a = 0; a < 2; ++a)
         for (label b = 0; b < 2; ++b)
         for (label k = 0; k < 2; ++k)
         {
-            const double w =
+            const label q = 4*a + 2*b + k;
+            cW[q] =
                 (a ? tc[0] : 1 - tc[0])*(b ? tc[1] : 1 - tc[1])
                *(k ? tc[2] : 1 - tc[2]);
-            if (w <= 0) continue;
-            const label idx = ring.cellE
+            cIdx[q] = ring.cellE
             (
                 c0[0] + a - shift[0], c0[1] + b - shift[1],
                 c0[2] + k - shift[2]
             );
+            if (cW[q] > 0 && !(inMeshE_[cIdx[q]] > 0))
+            {
+                lost += cW[q];
+                cW[q] = 0;
+            }
+        }
+        if (lost > 0 && lost < 1)
+        {
+            for (double& w : cW) w /= 1 - lost;
+        }
+        for (label a = 0; a < 2; ++a)
+        for (label b = 0; b < 2; ++b)
+        for (label k = 0; k < 2; ++k)
+        {
+            const double w = cW[4*a + 2*b + k];
+            if (w <= 0) continue;
+            const label idx = cIdx[4*a + 2*b + k];
             VcellE_[idx] += w*Vp;
             pgE_[idx] += w*Vp*pgp[p];
             KgE_[idx] += w*Vp*Kgp[p];
@@ -85,22 +107,49 @@ void Foam::solidLattice::depositParallel
             for (label e = 0; e < 3; ++e) { f0[e] = c0[e]; tf[e] = tc[e]; }
             // faces 0..N along d
             hat(s[d], N[d] + 1, f0[d], tf[d]);
+            // (a face is in the mesh if a cell on either side is)
+            label fIdx[8];
+            double fW[8];
+            double fLost = 0;
             for (label a = 0; a < 2; ++a)
             for (label b = 0; b < 2; ++b)
             for (label k = 0; k < 2; ++k)
             {
-                const double w =
+                const label q = 4*a + 2*b + k;
+                fW[q] =
                     (a ? tf[0] : 1 - tf[0])*(b ? tf[1] : 1 - tf[1])
                    *(k ? tf[2] : 1 - tf[2]);
-                if (w <= 0) continue;
-                VfaceE_[d]
-                [
-                    ring.faceE
-                    (
-                        d, f0[0] + a - shift[0], f0[1] + b - shift[1],
-                        f0[2] + k - shift[2]
-                    )
-                ] += w*Vp;
+                label g[3] =
+                {
+                    f0[0] + a - shift[0], f0[1] + b - shift[1],
+                    f0[2] + k - shift[2]
+                };
+                fIdx[q] = ring.faceE(d, g[0], g[1], g[2]);
+                if (!(fW[q] > 0)) continue;
+                bool in = false;
+                if (g[d] < ring.nE(d))
+                {
+                    in = inMeshE_[ring.cellE(g[0], g[1], g[2])] > 0;
+                }
+                if (!in && g[d] > 0)
+                {
+                    --g[d];
+                    in = inMeshE_[ring.cellE(g[0], g[1], g[2])] > 0;
+                }
+                if (!in)
+                {
+                    fLost += fW[q];
+                    fW[q] = 0;
+                }
+            }
+            if (fLost > 0 && fLost < 1)
+            {
+                for (double& w : fW) w /= 1 - fLost;
+            }
+            for (label q = 0; q < 8; ++q)
+            {
+                if (fW[q] <= 0) continue;
+                VfaceE_[d][fIdx[q]] += fW[q]*Vp;
             }
         }
     }

@@ -10,8 +10,7 @@ x = 1, patch 'face'), opening into the air x in [1, 2.5], y in [0, 1]
 cells; n a multiple of 10: the bore is n/5 cells wide).  Air rho 1.4, p 1
 at rest (sound speed 1); the chamber x < 0.2 holds hot compressed gas
 (pC, rhoC: by default 50 and 7, ten times the air's temperature, sound
-speed 3.16; with 100 and 14 the heavy bullet's run stops as it leaves the
-muzzle: see the README).  The bullet fills the bore from x = 0.2 to 0.35: density
+speed 3.16).  The bullet fills the bore from x = 0.2 to 0.35: density
 rhoS (the heavy bullet 100, the light one 40: the dissertation's 1250 and
 500 in the ratio 2.5), neoHookean E 1e4, nu 0.25 (strains of 0.5 % under the
 chamber pressure), sliding on the bore (MPM slip on 'barrel').  'gap'
