@@ -588,13 +588,13 @@ bool Foam::csmpmStepper::pressureStep
     // the volume the solid brings in (the pressure's work on the solid's
     // nodes in (3.36) at their new velocities, turned round; none where
     // the solid crosses a cell rigidly).  Where the solid leaves a cell
-    // the gas expands into the volume it frees and does the same work
-    // p dV on the solid, with the same shared pressure (never more than
-    // half the gas's internal energy in one step: a nearly covered cell
-    // holds little).  (The isentropic change of the gas's own internal
-    // energy over the open volume's growth, used before, took less than
-    // the solid got: in a channel the gas + bullet energy rose by 1 % of
-    // the bullet's kinetic gain once it was fast)
+    // the gas expands into the volume it frees: the isentropic change of
+    // its internal energy over the open volume's growth, -p_gas dV for a
+    // small step and never more than the gas holds (p dV with the shared
+    // pressure, capped at half the gas's internal energy a step, drained
+    // the cells a bending post uncovers in cylindersMach3 to p = 0; with
+    // the repair of inadmissible cells the isentropic form keeps the gas
+    // + bullet energy of bullet2D falling at every written time)
     {
         std::vector<double>& E = out.q[4];
         for (const label i : cells_)
@@ -616,7 +616,8 @@ bool Foam::csmpmStepper::pressureStep
                 )/out.q[0][i];
                 if (eInt > 0)
                 {
-                    E[i] += max(p*W, -0.5*eInt);
+                    const double open = max(1 - lattice_.phi(i), gasVolumeMin_);
+                    E[i] += eInt*(std::pow(1 - W/open, 1 - gamma_) - 1);
                 }
             }
         }
