@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Write one slope-failure case (dissertation 2.3.4, Fig. 2.20) into
 directory D: python3 makeCase.py D [kernel=umls] [h=0.5] [H=8] [beta=60]
-[crest=12] [floor=20] [depth=1] [tEnd=6] [write=0.25] [transfer=FLIP]
+[crest=12] [floor=20] [depth=1] [tEnd=6] [write=0.25] [transfer=FLIP] [flip=0.99]
 [structured=1] [tet=1] [support=mean]
 
 Geometry (the dissertation gives the figure, not the numbers; these are
@@ -24,7 +24,7 @@ particle columns of width h/2 up to the slope's surface at their centre.
 """
 import math, os, sys
 a = dict(kernel='umls', h=0.5, H=8.0, beta=60.0, crest=12.0, floor=20.0,
-         depth=1.0, tEnd=6.0, write=0.25, transfer='FLIP', structured=1, tet=1.0,
+         depth=1.0, tEnd=6.0, write=0.25, transfer='FLIP', flip=0.99, structured=1, tet=1.0,
          support='mean')
 d = sys.argv[1]
 for kv in sys.argv[2:]:
@@ -98,7 +98,7 @@ support = ('\nsupportSize ' + a['support'] + ';  // h_v of the umls kernel: the 
 w('constant/mpmProperties', 'mpmProperties', f'''
 kernel      {a["kernel"]};{support}
 transfer    {a["transfer"]};
-flipRatio   0.99;
+flipRatio   {a["flip"]:g};
 CFL         0.4;
 gravity     (0 -9.81 0);
 logInterval 2000;
