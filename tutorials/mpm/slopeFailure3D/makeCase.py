@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Write one slope-failure case (dissertation 2.3.4, Fig. 2.20) into
 directory D: python3 makeCase.py D [kernel=umls] [h=0.5] [H=8] [beta=60]
-[crest=12] [floor=20] [depth=1] [tEnd=6] [write=0.25] [transfer=FLIP] [tet=1]
+[crest=12] [floor=20] [depth=1] [tEnd=6] [write=0.25] [transfer=FLIP] [flip=0.99]
+[structured=1] [tet=1] [support=mean]
 
 Geometry (the dissertation gives the figure, not the numbers; these are
 chosen here): a slope of sensitive clay H high at beta degrees, its crest
@@ -13,14 +14,18 @@ two sides rollers (slip), front and top free.  Clay of 2.3.4: henckyJ2,
 E 25 MPa, nu 0.499, kappaP 40.82 kPa, kappaR 2.45 kPa, eta 5, rho 2150,
 Fbar on.
 
-kernel umls: a gmsh tetrahedral mesh of size tet*h (slopeFailure3D.geo, run
-gmsh + gmshToFoam yourself: see Allrun); kernel bspline2: a blockMesh of
-cubes h.  Particles on a lattice of spacing h/2, the same in both:
+kernel umls: a gmsh tetrahedral mesh (slopeFailure3D.geo, run gmsh +
+gmshToFoam yourself: see Allrun): structured=1 the cubes h cut into 6
+tetrahedra each (the vertices of the bspline2 mesh), structured=0 gmsh's
+unstructured tetrahedra of size tet*h; support: the umls kernel's
+supportSize (mean or maxEdge edge of the vertex).  kernel bspline2: a
+blockMesh of cubes h.  Particles on a lattice of spacing h/2, the same in both:
 particle columns of width h/2 up to the slope's surface at their centre.
 """
 import math, os, sys
 a = dict(kernel='umls', h=0.5, H=8.0, beta=60.0, crest=12.0, floor=20.0,
-         depth=1.0, tEnd=6.0, write=0.25, transfer='FLIP', tet=1.0)
+         depth=1.0, tEnd=6.0, write=0.25, transfer='FLIP', flip=0.99, structured=1, tet=1.0,
+         support='mean')
 d = sys.argv[1]
 for kv in sys.argv[2:]:
     k, v = kv.split('=')
@@ -41,7 +46,9 @@ def w(path, obj, body):
         f.write('// mpmFoam tutorial mpm/slopeFailure3D, written by makeCase.py\n')
         f.write(Hdr % obj + body)
 with open(os.path.join(d, 'meshSize'), 'w') as f:
-    f.write(f'-setnumber Lx {Lx} -setnumber Ly {Ly} -setnumber D {D} -setnumber lc {a["tet"]*h:.6g}\n')
+    f.write(f'-setnumber Lx {Lx} -setnumber Ly {Ly} -setnumber D {D} '
+            + (f'-setnumber lc {h:.6g} -setnumber structured 1\n' if a['structured']
+               else f'-setnumber lc {a["tet"]*h:.6g} -setnumber structured 0\n'))
 w('system/blockMeshDict', 'blockMeshDict', f'''
 // {Lx:g} x {Ly:g} x {D:g} m in cubes of h = {h:g} m (for kernel bspline2)
 vertices ( (0 0 0) ({Lx} 0 0) ({Lx} {Ly} 0) (0 {Ly} 0)
@@ -86,10 +93,12 @@ divSchemes { default none; } laplacianSchemes { default none; }
 interpolationSchemes { default linear; } snGradSchemes { default none; }
 ''')
 w('system/fvSolution', 'fvSolution', '\n')
+support = ('\nsupportSize ' + a['support'] + ';  // h_v of the umls kernel: the mean edge at the vertex'
+           if a['kernel'] == 'umls' else '')
 w('constant/mpmProperties', 'mpmProperties', f'''
-kernel      {a["kernel"]};
+kernel      {a["kernel"]};{support}
 transfer    {a["transfer"]};
-flipRatio   0.99;
+flipRatio   {a["flip"]:g};
 CFL         0.4;
 gravity     (0 -9.81 0);
 logInterval 2000;

@@ -14,7 +14,9 @@ of the last time drawn on the particles' initial positions; along the
 crest's top layer (initial y > H - 1 m, x < crest) the x-intervals where
 it exceeds 0.5 are the scarps where failure surfaces reached the ground,
 counted when separated by less strained ground (< 0.5) at least 2
-spacings long.  More than one: retrogressive.  The retreat of the
+spacings long.  More than one: retrogressive.  The count is printed for
+every written time too (the surfaces of a retrogressive slide form one
+after the other; a block between two can be remoulded by the end).  The retreat of the
 rearmost such point over the three pictured times is printed too.
 Writes runout.dat, slopeFailure3D_runout.png,
 slopeFailure3D_epsilonP.png, slopeFailure3D_meanStress.png; prints the
@@ -59,12 +61,13 @@ def case(d):
     times = sorted((t for t in os.listdir(d) if re.fullmatch(r"[0-9.e+-]+", t)
                     and os.path.isdir(os.path.join(d, t, "lagrangian"))), key=float)
     cl = lambda t, f: field(os.path.join(d, t, "lagrangian/mpmCloud", f))
-    t, front = [], []
+    t, front, eps = [], [], {}
     for tt in times:
         P = cl(tt, "positions")[:, :3]
         ok = hasNeighbour(P, 2*g["spacing"], strict=True)
         t.append(float(tt))
         front.append(P[ok, 0].max())
+        eps[tt] = cl(tt, "epsilonP")[np.argsort(cl(tt, "origId")[:, 0].astype(int)), 0]
     P0 = cl(times[0], "positions")[:, :3]
     id0 = cl(times[0], "origId")[:, 0].astype(int)
     snaps = {}
@@ -77,14 +80,15 @@ def case(d):
     P0 = P0[np.argsort(id0)]
     front = np.array(front)
     return dict(name=d, g=g, t=np.array(t), runout=front - front[0], P0=P0,
-                snaps=snaps, last=times[-1])
+                snaps=snaps, last=times[-1], eps=eps)
 
 
-def scarps(c, thr=0.5):
-    """x-intervals of the crest's top layer (initial positions) where the
-    final epsilonP > thr, separated by >= 2 spacings of ground below thr"""
+def scarps(c, thr=0.5, t=None):
+    """x-intervals of the crest's top layer (initial positions) where
+    epsilonP > thr at time t (default the last), separated by >= 2
+    spacings of ground below thr"""
     g = c["g"]
-    P0, e = c["P0"], c["snaps"][c["last"]]["eps"]
+    P0, e = c["P0"], c["eps"][c["last"] if t is None else t]
     top = (P0[:, 1] > g["H"] - 1.0) & (P0[:, 0] < g["crest"])
     xs = np.round(P0[top, 0]/g["spacing"]).astype(int)
     cols = np.unique(xs)
@@ -174,5 +178,11 @@ for c in cases:
           f" {len(sc)} failure surface(s) reaching the crest at x = "
           + ", ".join(f"[{a:.2f}, {b:.2f}]" for a, b in sc) + " m"
           + (" (retrogressive)" if len(sc) > 1 else ""))
+    n = {t: len(scarps(c, t=t)) for t in c["eps"]}
+    tm = max(n, key=lambda t: (n[t], -float(t)))
+    print(f"{c['g']['kernel']}: failure surfaces reaching the crest at each written time: "
+          + " ".join(f"{t}: {n[t]}" for t in n) + f"; most {n[tm]} (first at t = {tm} s"
+          + (": x = " + ", ".join(f"[{a:.2f}, {b:.2f}]" for a, b in scarps(c, t=tm)) + " m" if n[tm] else "")
+          + ")")
 print(f"run-out difference between the kernels: {100*abs(r[0] - r[1])/max(r):.1f} %"
       f" of the larger ({abs(r[0] - r[1]):.3f} m)")
