@@ -1,19 +1,21 @@
 #!/usr/bin/python3
-"""The CSMPM cost benchmark's case: python3 makeBench.py D n=256 steps=100 solid=1 spacing=S
+"""The CSMPM cost benchmark's case: python3 makeBench.py D n=256 steps=100 solid=1 spacing=S [L=1]
 
 The unit square, n x n cells, walls; gas rho 1, p 1 at rest with p 5 in a
 circle of radius 0.1 at (0.25, 0.5) (a blast); with solid=1 an elastic disk
 (rho 10, E 1e4, neoHookean, bspline2, APIC) of radius 0.1 at (0.6, 0.5):
-3.1 % of the cells.  The time step is fixed at 5e-5 (maxDeltaT, below both
+3.1 % of the cells.  L: the box [0, L]^2 (default 1), with
+the blast and the disk where they are (n cells a side: L = 2 with 2n
+cells is the same cell size on a lattice four times larger).  The time step is fixed at 5e-5 (maxDeltaT, below both
 the gas's and the solid's stable steps), so every run takes the same steps.
 """
 import os, sys
-a = dict(n=256, steps=100, solid=1, spacing=1.0/512)
+a = dict(n=256, steps=100, solid=1, spacing=1.0/512, L=1.0)
 d = sys.argv[1]
 for kv in sys.argv[2:]:
     k, v = kv.split('=')
     a[k] = type(a[k])(v)
-n = int(a['n']); dx = 1.0/n; dt = 5e-5
+n = int(a['n']); L = a['L']; dx = L/n; dt = 5e-5
 H = 'FoamFile { version 2.0; format ascii; class %s; object %s; }\n'
 for sub in ('0', 'constant', 'system'):
     os.makedirs(os.path.join(d, sub), exist_ok=True)
@@ -21,7 +23,7 @@ def w(path, cls, obj, body):
     with open(os.path.join(d, path), 'w') as f:
         f.write(H % (cls, obj) + body)
 w('system/blockMeshDict', 'dictionary', 'blockMeshDict', f'''
-vertices ( (0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 {dx}) (1 0 {dx}) (1 1 {dx}) (0 1 {dx}) );
+vertices ( (0 0 0) ({L} 0 0) ({L} {L} 0) (0 {L} 0) (0 0 {dx}) ({L} 0 {dx}) ({L} {L} {dx}) (0 {L} {dx}) );
 blocks ( hex (0 1 2 3 4 5 6 7) ({n} {n} 1) simpleGrading (1 1 1) );
 boundary
 (
