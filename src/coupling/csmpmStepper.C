@@ -702,6 +702,15 @@ void Foam::csmpmStepper::solidTotals
 }
 
 
+Foam::scalar Foam::csmpmStepper::solidStrainEnergy() const
+{
+    scalar e = 0;
+    forAll(P_.x, p) e += P_.psi[p]*P_.V0[p];
+    if (Pstream::parRun()) reduce(e, sumOp<scalar>());
+    return e;
+}
+
+
 void Foam::csmpmStepper::write() const
 {
     mpmCloudIO::write(fvMesh_, cloudName_, P_);

@@ -19,7 +19,10 @@ Description
     is coupled two-way to MPM solids on its lattice (CSMPM, 3.2.2-3.2.8,
     csmpmStepper in src/coupling): one pressure system for gas and solid,
     the semiImplicit stepper required.  The cloud (with J^g), alphaSolid
-    and Rsolid are written at the write times.  Without
+    and Rsolid are written at the write times.  The log gives per step the
+    CG iterations and residual, the solid and interface cells and the gas
+    + solid totals of mass, momentum and energy (the solid's kinetic and
+    elastic energy), and the parts at the write times.  Without
     constant/mpmProperties nothing of the coupling is built or run.
 
     Reads system/shockMpmDict, constant/thermophysicalProperties and the
@@ -164,20 +167,30 @@ int main(int argc, char *argv[])
             }
         }
         gas.step(runTime);
-        if (coupled && runTime.writeTime())
+        if (coupled)
         {
-            coupled->write();
+            // Every step: gas + solid totals (the solid's energy kinetic
+            // plus elastic, psi V0); at write times the parts as well
             scalar m, ke;
             vector mom;
             coupled->solidTotals(m, mom, ke);
+            const scalar se = coupled->solidStrainEnergy();
             scalar gm, ge;
             vector gmom;
             gas.totals(gm, gmom, ge);
             const scalar sc = coupled->lattice().scale();
-            Info<< "    solid totals: mass " << sc*m << ", momentum "
-                << sc*mom << ", kinetic energy " << sc*ke << nl
-                << "    gas + solid: mass " << gm + sc*m << ", momentum "
-                << gmom + sc*mom << nl;
+            Info<< "    gas + solid (step): mass " << gm + sc*m
+                << ", momentum " << gmom + sc*mom << ", energy "
+                << ge + sc*(ke + se) << nl;
+            if (runTime.writeTime())
+            {
+                coupled->write();
+                Info<< "    solid totals: mass " << sc*m << ", momentum "
+                    << sc*mom << ", elastic energy " << sc*se
+                    << ", kinetic energy " << sc*ke << nl
+                    << "    gas + solid: mass " << gm + sc*m << ", momentum "
+                    << gmom + sc*mom << nl;
+            }
         }
         runTime.write();
     }
