@@ -88,6 +88,21 @@ void Foam::mpmSolver::updateStress
             }
         }
         fbarAverage(P, Jbar_);
+
+        // The volume ratio's part that the average does not see, d = J -
+        // Jbar, and its average A d (fbarStabilise)
+        drift_.setSize(nP);
+        driftBar_.setSize(nP);
+        forAll(materials_, k)
+        {
+            if (!materials_[k].Fbar()) continue;
+            for (label p = materialStart_[k]; p < materialStart_[k + 1]; ++p)
+            {
+                drift_[p] = det(P.F[p])*P.Jp[p] - Jbar_[p];
+                driftBar_[p] = drift_[p];
+            }
+        }
+        fbarAverage(P, driftBar_);
     }
 
     forAll(materials_, k)
@@ -130,6 +145,28 @@ void Foam::mpmSolver::updateStress
             {
                 P.sigma[p] += piBar_[p]*Id;
             }
+        }
+        fbarStabilise(P);
+    }
+}
+
+
+// The F-bar's zero-energy volume modes held by a shear-stiff penalty
+void Foam::mpmSolver::fbarStabilise(mpmParticles& P) const
+{
+    // W = sum_p V0_p G/2 d_p^2, d = (I - A) J: its Cauchy stress
+    // (1/V0_q) dW/dJ_q I = G (d - A d)_q I (A symmetric for one density)
+    const symmTensor Id(symm(tensor::I - mesh_.offAxes()));
+    forAll(materials_, k)
+    {
+        const mpmMaterial& mat = materials_[k];
+        if (!mat.Fbar()) continue;
+        const scalar G = mat.E()/(2*(1 + mat.nu()));
+        for (label p = materialStart_[k]; p < materialStart_[k + 1]; ++p)
+        {
+            const scalar d = drift_[p];
+            P.sigma[p] += G*(d - driftBar_[p])*Id;
+            P.psi[p] += 0.5*G*d*d;
         }
     }
 }

@@ -2,7 +2,7 @@
 """Write one slope-failure case (dissertation 2.3.4, Fig. 2.20) into
 directory D: python3 makeCase.py D [kernel=umls] [h=0.5] [H=8] [beta=60]
 [crest=12] [floor=20] [depth=1] [tEnd=6] [write=0.25] [transfer=FLIP] [flip=0.99]
-[structured=1] [tet=1] [support=mean]
+[structured=1] [tet=1] [support=mean] [update=USL]
 
 Geometry (the dissertation gives the figure, not the numbers; these are
 chosen here): a slope of sensitive clay H high at beta degrees, its crest
@@ -25,7 +25,7 @@ particle columns of width h/2 up to the slope's surface at their centre.
 import math, os, sys
 a = dict(kernel='umls', h=0.5, H=8.0, beta=60.0, crest=12.0, floor=20.0,
          depth=1.0, tEnd=6.0, write=0.25, transfer='FLIP', flip=0.99, structured=1, tet=1.0,
-         support='mean')
+         support='mean', update='USL')
 d = sys.argv[1]
 for kv in sys.argv[2:]:
     k, v = kv.split('=')
@@ -97,6 +97,7 @@ support = ('\nsupportSize ' + a['support'] + ';  // h_v of the umls kernel: the 
            if a['kernel'] == 'umls' else '')
 w('constant/mpmProperties', 'mpmProperties', f'''
 kernel      {a["kernel"]};{support}
+updateScheme {a["update"]};
 transfer    {a["transfer"]};
 flipRatio   {a["flip"]:g};
 CFL         0.4;
