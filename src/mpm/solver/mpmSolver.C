@@ -88,21 +88,6 @@ void Foam::mpmSolver::updateStress
             }
         }
         fbarAverage(P, Jbar_);
-
-        // The volume ratio's part that the average does not see, d = J -
-        // Jbar, and its average A d (fbarStabilise)
-        drift_.setSize(nP);
-        driftBar_.setSize(nP);
-        forAll(materials_, k)
-        {
-            if (!materials_[k].Fbar()) continue;
-            for (label p = materialStart_[k]; p < materialStart_[k + 1]; ++p)
-            {
-                drift_[p] = det(P.F[p])*P.Jp[p] - Jbar_[p];
-                driftBar_[p] = drift_[p];
-            }
-        }
-        fbarAverage(P, driftBar_);
     }
 
     forAll(materials_, k)
@@ -216,13 +201,13 @@ Foam::mpmSolver::mpmSolver
     musl_(false),
     hMin_(*std::min_element(mesh.vertexSize().begin(), mesh.vertexSize().end())),
     grid_(mesh.nVertices()),
+    anyFbar_(false),
     contact_(nullptr),
     contactDt_(GREAT),
     contactDtNext_(-1),
     cLast_(0),
     cMaterial_(-1),
     vLast_(0),
-    anyFbar_(false),
     energy0_(0),
     energyGrowthBound_(0)
 {

@@ -137,10 +137,25 @@ void Foam::mpmSolver::fbarStress
 
 
 // The F-bar's zero-energy volume modes held by a shear-stiff penalty
-void Foam::mpmSolver::fbarStabilise(mpmParticles& P) const
+void Foam::mpmSolver::fbarStabilise(mpmParticles& P)
 {
     // W = sum_p V0_p G/2 d_p^2, d = (I - A) J: its Cauchy stress
     // (1/V0_q) dW/dJ_q I = G (d - A d)_q I (A symmetric for one density)
+    // d = J - Jbar (J = det(F) Jp: the return mapping kept it) and A d
+    const label nP = P.size();
+    drift_.setSize(nP);
+    driftBar_.setSize(nP);
+    forAll(materials_, k)
+    {
+        if (!materials_[k].Fbar()) continue;
+        for (label p = materialStart_[k]; p < materialStart_[k + 1]; ++p)
+        {
+            drift_[p] = det(P.F[p])*P.Jp[p] - Jbar_[p];
+            driftBar_[p] = drift_[p];
+        }
+    }
+    fbarAverage(P, driftBar_);
+
     const symmTensor Id(symm(tensor::I - mesh_.offAxes()));
     forAll(materials_, k)
     {
