@@ -47,7 +47,21 @@ Usage
     \verbatim
         bsmsModel   "constant/bsmsModel.pt";
         bsmsRangeWarning 2;     // standard deviations; default 2
+        bsmsHybrid              // optional: a hybrid rollout
+        {
+            modelSteps  4;      // N model steps, then
+            solverSteps 50;     // M steps of the solver, from its state on
+            solver      pimpleFoam;
+            deltaT      0.02;   // the solver's step
+        }
     \endverbatim
+    Hybrid rollout (bsmsHybridSolver): every N model steps the state goes
+    back to the solver, which runs M of its own steps (a whole number of
+    model steps) as its own process on the case's files, and the model goes
+    on from the solver's state; the solver's model times are read back and
+    written like the model's.  Without bsmsHybrid the rollout is pure
+    (N = infinity).  The log's last lines give the solver phases' share of
+    the cost.  Serial only.
 
 \*---------------------------------------------------------------------------*/
 
@@ -55,6 +69,7 @@ Usage
 #include "OSspecific.H"
 #include "bsmsGatheredModel.H"
 #include "bsmsFieldIO.H"
+#include "bsmsHybridSolver.H"
 #include "dictionaryChecks.H"
 
 #include <chrono>
@@ -224,14 +239,55 @@ int main(int argc, char *argv[])
     }
     checkRange(runTime.value());
 
+    // Hybrid rollout: every N model steps the solver's M steps
+    std::unique_ptr<bsmsHybridSolver> hybrid
+    (
+        bsmsHybridSolver::active(controlDict)
+      ? new bsmsHybridSolver(mesh, controlDict, spec.deltaT)
+      : nullptr
+    );
+
     runTime.setDeltaT(spec.deltaT);
     const auto t0 = std::chrono::steady_clock::now();
     label nModelSteps = 0;
+    label nSolverTimes = 0;
+    label sinceHandover = 0;
     double modelSeconds = 0;
     char buf[200];
+    // The solver's phase from the current time, if one is due and fits
+    // before the end time: its model times read back, written as ours
+    auto solverPhase = [&]()
+    {
+        if (!hybrid || sinceHandover < hybrid->modelSteps()) return;
+        const scalar tEnd =
+            runTime.value() + hybrid->phaseModelSteps()*spec.deltaT;
+        if (tEnd > runTime.endTime().value() + 0.5*spec.deltaT) return;
+        hybrid->runPhase(spec.outputFields);
+        for (label k = 1; k <= hybrid->phaseModelSteps(); ++k)
+        {
+            ++runTime;
+            hybrid->readBack(spec.inputFields, k);
+            if (phi.valid())
+            {
+                phi() = fvc::flux(mesh.lookupObject<volVectorField>("U"));
+            }
+            state = registryState(mesh, spec.inputFields,
+                spec.inputComponents, controlDict, "bsmsModel");
+            global = model->gather(state);
+            checkRange(runTime.value());
+            ++nSolverTimes;
+            Info<< "Time = " << runTime.timeName() << "  solver phase "
+                << hybrid->nPhases() << nl;
+            runTime.write();
+        }
+        sinceHandover = 0;
+    };
     while (runTime.run())
     {
+        solverPhase();
+        if (!runTime.run()) break;
         ++runTime;
+        ++sinceHandover;
         const auto ts = std::chrono::steady_clock::now();
         std::vector<double> next(global);
         const bool finite = model->advance(next);
@@ -281,7 +337,7 @@ int main(int argc, char *argv[])
     (
         std::chrono::steady_clock::now() - t0
     ).count();
-    const scalar simulated = nModelSteps*spec.deltaT;
+    const scalar simulated = (nModelSteps + nSolverTimes)*spec.deltaT;
     std::snprintf
     (
         buf, sizeof(buf),
@@ -292,6 +348,18 @@ int main(int argc, char *argv[])
         wall/max(simulated, SMALL)
     );
     Info<< nl << buf << nl;
+    if (hybrid)
+    {
+        std::snprintf
+        (
+            buf, sizeof(buf),
+            "Hybrid rollout: %d solver phases (%d model times) in %.3f s"
+            " (the solver's processes, start-up included), %d model steps",
+            int(hybrid->nPhases()), int(nSolverTimes),
+            hybrid->solverSeconds(), int(nModelSteps)
+        );
+        Info<< buf << nl;
+    }
     rangeSummary();
     Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
         << "  ClockTime = " << runTime.elapsedClockTime() << " s"

@@ -32,6 +32,15 @@ Description
     Training stops at `steps` or after `maxTrainTime` seconds of training,
     whichever comes first.
 
+    Rollout training (rolloutSteps K > 1, increment models only): a sample
+    is K consecutive model steps from a recorded time t_k (t_k .. t_{k+K}
+    recorded), the model rolled out K steps from the (noisy) state at t_k
+    and the loss the mean normalised state error over those steps
+    (graphNetTrainer): what a rollout does to its own errors is trained
+    on.  rolloutBackprop false detaches each step's input (the model
+    still sees its own rolled-out states, at one step's cost of memory).
+    A step costs about K one-step steps.
+
     Validation (optional): rollouts from the first time (>= startTime) of
     each validation case, every `interval` steps and at the end, with the
     root mean square errors of the output fields (physical units, over all
@@ -81,6 +90,8 @@ Usage
         lrDecay       0.1;
         decaySteps    5e6;
         noise         0;
+        rolloutSteps  1;              // model steps per training sample
+        rolloutBackprop true;         // gradient through the rollout
         normAccumulations 1000;
         seed          0;
         checkpoint    "constant/bsmsModel.pt";
@@ -150,15 +161,14 @@ Usage
 #include "Time.H"
 #include "polyMesh.H"
 #include "IOdictionary.H"
-#include "IFstream.H"
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "dictionaryChecks.H"
-#include "bsmsModelSpec.H"
+#include "bsmsTrainSettings.H"
 #include "bsmsFieldIO.H"
 #include "bsmsSurrogateModel.H"
 #include "bsmsTrajectory.H"
-#include "bsmsPstreamSum.H"
+#include "bsmsTrainingRun.H"
 #include "Pstream.H"
 
 #include <chrono>
@@ -176,86 +186,359 @@ using namespace Foam;
 namespace
 {
 
-wordList getWords(const dictionary& dict, const word& key)
+// * * * * * * * * * * * * * * * * Stage: data * * * * * * * * * * * * * * * //
+
+//- The recorded cases; fills in the spec's components, model time step and
+//  training range
+bsmsTrainingData readData
+(
+    bsmsTrainSettings& t,
+    const Time& runTime,
+    const polyMesh& mesh,
+    const dictionary& dict
+)
 {
-    using namespace dictionaryChecks;
-    const wordList w
-    (
-        getAs<wordList>(dict, key, "a list of field names, e.g. (U p)")
-    );
-    if (w.empty())
+    bsmsModelSpec& spec = t.spec;
+    bsmsTrainingData d;
+    const label nCells = mesh.nCells();
+    labelList comps;
+    for (const fileName& cn : t.cases)
     {
-        badEntry(dict, key, "()", "a non-empty list of field names");
-    }
-    return w;
-}
-
-
-fileNameList getCases(const dictionary& dict, const fileNameList& deflt)
-{
-    using namespace dictionaryChecks;
-    const fileNameList c
-    (
-        getAsOrDefault<fileNameList>
+        d.train.push_back
         (
-            dict, "cases", deflt, "a list of case directories"
-        )
-    );
-    if (c.empty())
-    {
-        badEntry(dict, "cases", "()", "a non-empty list of case directories");
+            bsmsTrajectory::read
+            (
+                cn, runTime.path(), t.startTime, spec, comps, nCells, dict
+            )
+        );
+        Info<< "Case " << d.train.back().dir << ": "
+            << d.train.back().times.size() << " times, "
+            << d.train.back().times.size() - 1 << " pairs" << nl;
     }
-    return c;
-}
-
-
-double secondsSince(const std::chrono::steady_clock::time_point& t0)
-{
-    return std::chrono::duration<double>
-    (
-        std::chrono::steady_clock::now() - t0
-    ).count();
-}
-
-
-//- CPU seconds of this process (all its threads)
-double cpuSeconds()
-{
-    timespec t;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return t.tv_sec + 1e-9*t.tv_nsec;
-}
-
-
-//- A /proc/self/status entry in MB (VmRSS, VmHWM), 0 if unknown
-double procStatusMB(const std::string& key)
-{
-    std::ifstream is("/proc/self/status");
-    std::string k;
-    while (is >> k)
+    for (const fileName& cn : t.validationCases)
     {
-        if (k == key + ":")
+        d.valid.push_back
+        (
+            bsmsTrajectory::read
+            (
+                cn, runTime.path(), t.startTime, spec, comps, nCells, dict
+            )
+        );
+        Info<< "Validation case " << d.valid.back().dir << ": "
+            << d.valid.back().times.size() - 1 << " rollout steps" << nl;
+    }
+    spec.inputComponents = comps;
+    spec.check(dict);
+
+    // The model time step: the interval of the written times (uniform)
+    spec.deltaT = d.train[0].times[1] - d.train[0].times[0];
+    for (const bsmsTrajectory& tr : d.train)
+    {
+        for (label k = 0; k + 1 < tr.times.size(); ++k)
         {
-            double kB = 0;
-            is >> kB;
-            return kB/1024.0;
+            const scalar dt = tr.times[k + 1] - tr.times[k];
+            if (mag(dt - spec.deltaT) > 1e-4*spec.deltaT)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "The written times of " << tr.dir << " (entry 'cases'"
+                    << " in " << dict.name() << ") are not uniform: "
+                    << tr.times[k] << " to " << tr.times[k + 1]
+                    << " is not the model time step " << spec.deltaT
+                    << " of the first interval" << exit(FatalIOError);
+            }
         }
-        std::string rest;
-        std::getline(is, rest);
     }
-    return 0;
+
+    const label K = t.rolloutSteps;
+    for (label c = 0; c < label(d.train.size()); ++c)
+    {
+        for (label k = 0; k + K < d.train[c].times.size(); ++k)
+        {
+            d.samples.push_back({c, k});
+        }
+    }
+    if (d.samples.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "rolloutSteps " << K << " (entry 'rolloutSteps' in "
+            << dict.name() << ") needs a case with at least " << K + 1
+            << " written times; the longest has "
+            << d.train[0].times.size() << exit(FatalIOError);
+    }
+
+    // The training range per state component, for the model dictionary
+    // (bsmsInputRange checks rollout states against it)
+    const label nState = spec.nState();
+    spec.inputMin.setSize(nState, GREAT);
+    spec.inputMax.setSize(nState, -GREAT);
+    for (const bsmsTrajectory& tr : d.train)
+    {
+        for (const auto& st : tr.states)
+        {
+            for (std::size_t i = 0; i < st.size(); ++i)
+            {
+                const label c = i % nState;
+                spec.inputMin[c] = min(spec.inputMin[c], st[i]);
+                spec.inputMax[c] = max(spec.inputMax[c], st[i]);
+            }
+        }
+    }
+    Info<< label(d.samples.size())
+        << (K == 1 ? " training pairs" : " training samples") << "; per node "
+        << nState << " input field components " << spec.inputFields << ", "
+        << spec.nTypes() << " node types " << spec.nodeTypes << ", "
+        << spec.nOut() << " outputs " << spec.outputFields << " ("
+        << (spec.increment ? "increment" : "state") << " over deltaT "
+        << spec.deltaT << ")" << nl;
+    if (K > 1)
+    {
+        Info<< "Rollout training: " << K << " model steps per sample ("
+            << (t.trainer.rolloutBackprop ? "gradient through the rollout"
+              : "each step's input detached") << ")" << nl;
+    }
+    Info<< endl;
+    return d;
 }
 
+
+// * * * * * * * * * * * * * * * * Stage: model  * * * * * * * * * * * * * * //
+
+//- Noise on the state components that vary in the data (and are used)
+std::vector<double> noiseLevels
+(
+    const bsmsSurrogateModel& m,
+    const bsmsTrainingData& d,
+    const scalar noise
+)
+{
+    const label nState = m.spec().nState();
+    std::vector<double> noiseStd(nState, 0.0);
+    if (!(noise > 0)) return noiseStd;
+    label nVar = 0;
+    for (label c = 0; c < nState; ++c)
+    {
+        const double v0 = d.train[0].states[0][c];
+        // Unused components count as constant
+        bool constant = true;
+        if (m.used(c))
+        {
+            for (const bsmsTrajectory& tr : d.train)
+            {
+                for (const auto& x : tr.states)
+                {
+                    for (std::size_t i = c; constant && i < x.size(); i += nState)
+                    {
+                        constant = x[i] == v0;
+                    }
+                }
+            }
+        }
+        if (!constant)
+        {
+            noiseStd[c] = noise;
+            ++nVar;
+        }
+    }
+    Info<< "Input noise " << noise << " on " << nVar << " of " << nState
+        << " field components (none on those constant in the data or"
+        << " in the empty direction)" << nl;
+    return noiseStd;
+}
+
+
+//- Resume from the checkpoint if there is one (and not -fresh)
+void resume
+(
+    bsmsSurrogateModel& m,
+    const fileName& checkpoint,
+    const dictionary& dict,
+    const bool fresh
+)
+{
+    if (fresh || !isFile(checkpoint)) return;
+    try
+    {
+        m.net().load(checkpoint);
+    }
+    catch (const std::exception& e)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Cannot resume from the checkpoint " << checkpoint
+            << " (entry 'checkpoint' in " << dict.name() << "): "
+            << e.what() << nl << "    (use -fresh to start anew)"
+            << exit(FatalIOError);
+    }
+    Info<< "Resumed from " << checkpoint << " at step "
+        << label(m.net().step()) << nl;
+}
+
+
+// * * * * * * * * * * * * * * * Stage: report  * * * * * * * * * * * * * * //
+
+//- Time, CPU, communication and memory of the training
+void reportCosts
+(
+    const bsmsTrainingRun& run,
+    const label nSteps,
+    const double seconds,
+    const double cpu,
+    const double wall,
+    const double rssStart,
+    const label nRanks
+)
+{
+    const bool parallel = Pstream::parRun();
+    char buf[300];
+    std::snprintf
+    (
+        buf, sizeof(buf),
+        "Training: %d steps in %.2f s (%.4f s per step; validation"
+        " %.1f s not counted)",
+        int(nSteps), seconds, seconds/nSteps, run.validationSeconds
+    );
+    Info<< nl << buf << nl;
+    // The CPU time of the training (validation included): on a loaded
+    // machine the cores a run actually got
+    const scalar cpuAll = parallel ? returnReduce(scalar(cpu), sumOp<scalar>()) : cpu;
+    std::snprintf
+    (
+        buf, sizeof(buf),
+        "Training CPU time: %.2f s in this process, %.2f s summed"
+        " over the %d rank(s) (%.2f cores on average)",
+        cpu, cpuAll, int(nRanks), cpuAll/max(wall, 1e-30)
+    );
+    Info<< buf << nl;
+    if (parallel)
+    {
+        // The share of the time in the gradient sum (waiting for the
+        // slower rank included), master and the most of any rank
+        const bsmsPstreamSum& rs = run.rankSum();
+        const scalar commMaster = rs.seconds();
+        const scalar commMax = returnReduce(scalar(rs.seconds()), maxOp<scalar>());
+        std::snprintf
+        (
+            buf, sizeof(buf),
+            "Communication: %d gradient sums of %.3f MB, %.3f s on the"
+            " master (%.1f %% of the training time; the most of any"
+            " rank %.3f s), waiting for the slower rank included",
+            int(rs.nCalls()), rs.bytes()/1e6, commMaster,
+            100*commMaster/max(seconds, 1e-30), commMax
+        );
+        Info<< buf << nl;
+    }
+    const double peak = procStatusMB("VmHWM");
+    std::snprintf
+    (
+        buf, sizeof(buf),
+        "Memory: peak resident %.1f MB; %.1f MB before the model,"
+        " %.1f MB before training; training peak %.1f MB above that",
+        peak, rssStart, run.rssTrain, peak - run.rssTrain
+    );
+    Info<< buf << nl;
+}
+
+
+//- The one-step loss on every recorded pair without noise (ranks share)
+void reportFinalLoss(bsmsSurrogateModel& m, const bsmsTrainingData& d)
+{
+    const label nRanks = Pstream::parRun() ? Pstream::nProcs() : 1;
+    const label rank = Pstream::parRun() ? Pstream::myProcNo() : 0;
+    std::vector<std::pair<label, label>> pairs;
+    for (label c = 0; c < label(d.train.size()); ++c)
+    {
+        for (label k = 0; k + 1 < d.train[c].times.size(); ++k)
+        {
+            pairs.push_back({c, k});
+        }
+    }
+    const label nPairs = pairs.size();
+    double sum = 0;
+    std::vector<double> x, y;
+    // Parallel: every rank a contiguous share of the pairs
+    for (label p = rank*nPairs/nRanks; p < (rank + 1)*nPairs/nRanks; ++p)
+    {
+        const bsmsTrajectory& tr = d.train[pairs[p].first];
+        const label k = pairs[p].second;
+        x.clear();
+        y.clear();
+        m.appendInput(tr.states[k], x);
+        m.appendTarget(tr.states[k], tr.states[k + 1], y);
+        sum += m.net().loss(x, y);
+    }
+    if (Pstream::parRun()) reduce(sum, sumOp<scalar>());
+    char buf[100];
+    std::snprintf(buf, sizeof(buf), "%.6e", sum/nPairs);
+    Info<< "Final one-step loss over " << nPairs << " pairs (no noise): "
+        << buf << nl;
+}
+
+
+//- The ranks hold the same model (the same gradients and Adam steps)
+void checkRanksAgree(bsmsSurrogateModel& m)
+{
+    if (!Pstream::parRun()) return;
+    const label nRanks = Pstream::nProcs();
+    char buf[40];
+    std::snprintf
+    (
+        buf, sizeof(buf), "%016llx",
+        static_cast<unsigned long long>(m.net().parameterHash())
+    );
+    List<word> hashes(nRanks);
+    hashes[Pstream::myProcNo()] = buf;
+    Pstream::gatherList(hashes);
+    if (!Pstream::master()) return;
+    label nSame = 0;
+    for (const word& h : hashes) nSame += (h == hashes[0]);
+    if (nSame != nRanks)
+    {
+        FatalErrorInFunction
+            << "The ranks' parameters differ after training (hashes "
+            << hashes << "): the data-parallel steps went out of"
+            << " step; the checkpoint is the master's"
+            << exit(FatalError);
+    }
+    Info<< "Parameters identical on all " << nRanks << " ranks"
+        << " (hash " << hashes[0] << ")" << nl;
+}
+
+
+//- The training range recorded in the model dictionary
+void reportTrainingRange
+(
+    const bsmsTrainSettings& t,
+    const bsmsSurrogateModel& m
+)
+{
+    const bsmsModelSpec& spec = t.spec;
+    Info<< "Training range of the inputs (inputMin, inputMax of "
+        << bsmsSpecFile(t.checkpoint).name() << "):";
+    char buf[200];
+    label o = 0;
+    forAll(spec.inputFields, i)
+    {
+        for (label c = 0; c < spec.inputComponents[i]; ++c)
+        {
+            if (!m.used(o + c)) continue;
+            std::snprintf
+            (
+                buf, sizeof(buf), " %s%s [%.4g, %.4g]",
+                spec.inputFields[i].c_str(),
+                spec.inputComponents[i] == 3
+              ? (c == 0 ? "_x" : c == 1 ? "_y" : "_z") : "",
+                spec.inputMin[o + c], spec.inputMax[o + c]
+            );
+            Info<< buf;
+        }
+        o += spec.inputComponents[i];
+    }
+    Info<< nl;
+}
 
 } // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-
-//- gradientShards when the dictionary does not say: this many, or one per
-//  rank with more ranks, but at most the batch
-static const Foam::label defaultShards = 4;
-
 
 int main(int argc, char *argv[])
 {
@@ -291,8 +574,6 @@ int main(int argc, char *argv[])
     );
     #include "createPolyMesh.H"
 
-    using namespace dictionaryChecks;
-
     const word dictName("bsmsTrainDict");
     #include "setSystemMeshDictionaryIO.H"
     IOdictionary dict(dictIO);
@@ -300,684 +581,63 @@ int main(int argc, char *argv[])
     // name in the other ranks' error messages
     static_cast<dictionary&>(dict).name() = dict.objectPath();
 
-    // The model
-    bsmsModelSpec spec;
-    spec.model = getAsOrDefault<word>(dict, "model", "bsms", "one of 2(bsms mgn)");
-    if (spec.model != "bsms" && spec.model != "mgn")
-    {
-        badEntry(dict, "model", spec.model, "one of 2(bsms mgn)");
-    }
-    spec.latent = getLabelAtLeast(dict, "latent", 128, 1);
-    spec.hidden = getLabelAtLeast(dict, "hidden", 128, 1);
-    spec.messagePasses = getLabelAtLeast(dict, "messagePasses", 15, 1);
-    spec.levels.add("seeding", word("closeCenter"));
-    if (dict.found("levels", keyType::LITERAL))
-    {
-        if (!dict.isDict("levels"))
-        {
-            badEntry
-            (
-                dict, "levels", entryText(dict, "levels"),
-                "a sub-dictionary of bsmsLevels settings"
-            );
-        }
-        spec.levels = dict.subDict("levels");
-    }
-    spec.inputFields = getWords(dict, "inputFields");
-    spec.outputFields = getWords(dict, "outputFields");
-    spec.nodeTypes = getAsOrDefault<List<wordRe>>
-    (
-        dict, "nodeTypes", defaultNodeTypes(mesh),
-        "a list of patch names or regular expressions"
-    );
-    for (const wordRe& t : spec.nodeTypes)
-    {
-        bool found = false;
-        for (const polyPatch& pp : mesh.boundaryMesh())
-        {
-            found = found || t.match(pp.name());
-        }
-        if (!found)
-        {
-            OStringStream os;
-            os << "patch names or regular expressions matching patches of "
-               << mesh.boundaryMesh().names();
-            badEntry(dict, "nodeTypes", t, os.str());
-        }
-    }
-    {
-        const word p
-        (
-            getAsOrDefault<word>(dict, "predict", "increment", "increment or state")
-        );
-        if (p != "increment" && p != "state")
-        {
-            badEntry(dict, "predict", p, "increment or state");
-        }
-        spec.increment = (p == "increment");
-    }
-
-    // Training settings
-    gnnTorch::trainerSettings s;
-    // Bounds that keep the single-precision network finite: Adam moves
-    // each weight by up to lr per step (lr > 1 throws any O(1) weight
-    // away), lrDecay > 1 grows lr without bound, noise beyond 1e30 leaves
-    // the float range
-    s.lr = getInRange(dict, "lr", 1e-4, 0, 1);
-    s.lrMin = getInRange(dict, "lrMin", 1e-6, 0, 1);
-    s.lrDecay = getInRange(dict, "lrDecay", 0.1, 0, 1);
-    s.decaySteps = getInRange(dict, "decaySteps", 5e6, 0, 1e300);
-    if (s.decaySteps < 1)
-    {
-        badEntry(dict, "decaySteps", name(s.decaySteps),
-            "a number of steps >= 1 and <= 1e300");
-    }
-    const string allowedNoise("a finite number >= 0 and <= 1e30");
-    const scalar noise =
-        getAsOrDefault<scalar>(dict, "noise", 0, allowedNoise);
-    if (!(noise >= 0 && noise <= 1e30))
-    {
-        badEntry(dict, "noise", name(noise), allowedNoise);
-    }
-    s.normAccumulations = getLabelAtLeast(dict, "normAccumulations", 1000, 1);
-    s.seed = getLabelAtLeast(dict, "seed", 0, 0);
-
-    const label nSteps = getLabelAtLeast(dict, "steps", 2000, 1);
-    const label batch = getLabelAtLeast(dict, "batch", 1, 1);
-    if (batch < nRanks)
-    {
-        badEntry
-        (
-            dict, "batch", name(batch),
-            "a batch of at least the number of ranks (" + name(nRanks)
-          + "): each rank trains on its share of every step's batch"
-        );
-    }
-    // The batch in shards (graphNetTrainer::trainShards): forward and
-    // backward per shard, the shards' gradients added in shard order, so
-    // that any number of ranks up to gradientShards trains bit for bit as
-    // one rank does
-    const label nShards = getLabelAtLeast
-    (
-        dict, "gradientShards", min(batch, max(defaultShards, nRanks)), 1
-    );
-    if (nShards > batch || nShards < nRanks)
-    {
-        badEntry
-        (
-            dict, "gradientShards", name(nShards),
-            "from the number of ranks (" + name(nRanks) + ") to batch ("
-          + name(batch) + "): every rank takes whole shards of each batch"
-        );
-    }
-    // This rank's shards [shardFirst, shardFirst + nMineShards), samples
-    // [shareFirst, shareFirst + nMine) of every batch
-    const label shardFirst = rank*nShards/nRanks;
-    const label nMineShards = (rank + 1)*nShards/nRanks - shardFirst;
-    const label shareFirst = shardFirst*batch/nShards;
-    const label nMine =
-        (shardFirst + nMineShards)*batch/nShards - shareFirst;
-    const scalar maxTrainTime = getPositive(dict, "maxTrainTime", 1e30);
-    const label ckInterval =
-        getLabelAtLeast(dict, "checkpointInterval", nSteps, 1);
-    const label printInterval =
-        getLabelAtLeast(dict, "printInterval", max(nSteps/20, 1), 1);
-    fileName checkpoint
-    (
-        getAsOrDefault<fileName>
-        (
-            dict, "checkpoint", fileName("constant/bsmsModel.pt"),
-            "a file name"
-        )
-    );
-    checkpoint.expand();
-    if (!checkpoint.isAbsolute()) checkpoint = runTime.path()/checkpoint;
-
-    const scalar tStart =
-        getAsOrDefault<scalar>(dict, "startTime", -GREAT, "a time");
-
-    const fileNameList caseNames(getCases(dict, fileNameList(1, fileName("."))));
-
-    fileNameList validationCases;
-    label validationInterval = labelMax;
-    if (dict.found("validation", keyType::LITERAL))
-    {
-        if (!dict.isDict("validation"))
-        {
-            badEntry
-            (
-                dict, "validation", entryText(dict, "validation"),
-                "a sub-dictionary { cases (...); interval N; }"
-            );
-        }
-        const dictionary& vd = dict.subDict("validation");
-        validationCases = getCases(vd, fileNameList());
-        validationInterval = getLabelAtLeast(vd, "interval", labelMax, 1);
-    }
-
-    // The recorded cases
-    const label nCells = mesh.nCells();
-    labelList comps;
-    std::vector<bsmsTrajectory> train, valid;
-    for (const fileName& cn : caseNames)
-    {
-        train.push_back
-        (
-            bsmsTrajectory::read
-            (
-                cn, runTime.path(), tStart, spec, comps, nCells, dict
-            )
-        );
-        Info<< "Case " << train.back().dir << ": "
-            << train.back().times.size() << " times, "
-            << train.back().times.size() - 1 << " pairs" << nl;
-    }
-    for (const fileName& cn : validationCases)
-    {
-        valid.push_back
-        (
-            bsmsTrajectory::read
-            (
-                cn, runTime.path(), tStart, spec, comps, nCells, dict
-            )
-        );
-        Info<< "Validation case " << valid.back().dir << ": "
-            << valid.back().times.size() - 1 << " rollout steps" << nl;
-    }
-    spec.inputComponents = comps;
-    spec.check(dict);
-
-    // The model time step: the interval of the written times (uniform)
-    spec.deltaT = train[0].times[1] - train[0].times[0];
-    for (const bsmsTrajectory& tr : train)
-    {
-        for (label k = 0; k + 1 < tr.times.size(); ++k)
-        {
-            const scalar dt = tr.times[k + 1] - tr.times[k];
-            if (mag(dt - spec.deltaT) > 1e-4*spec.deltaT)
-            {
-                FatalIOErrorInFunction(dict)
-                    << "The written times of " << tr.dir << " (entry 'cases'"
-                    << " in " << dict.name() << ") are not uniform: "
-                    << tr.times[k] << " to " << tr.times[k + 1]
-                    << " is not the model time step " << spec.deltaT
-                    << " of the first interval" << exit(FatalIOError);
-            }
-        }
-    }
-
-    std::vector<std::pair<label, label>> pairs;
-    for (label c = 0; c < label(train.size()); ++c)
-    {
-        for (label k = 0; k + 1 < train[c].times.size(); ++k)
-        {
-            pairs.push_back({c, k});
-        }
-    }
-    const label nPairs = pairs.size();
-    const label nState = spec.nState();
-
-    // The training range per state component, for the model dictionary
-    // (bsmsInputRange checks rollout states against it)
-    spec.inputMin.setSize(nState, GREAT);
-    spec.inputMax.setSize(nState, -GREAT);
-    for (const bsmsTrajectory& tr : train)
-    {
-        for (const auto& st : tr.states)
-        {
-            for (std::size_t i = 0; i < st.size(); ++i)
-            {
-                const label c = i % nState;
-                spec.inputMin[c] = min(spec.inputMin[c], st[i]);
-                spec.inputMax[c] = max(spec.inputMax[c], st[i]);
-            }
-        }
-    }
-    Info<< nPairs << " training pairs; per node " << nState
-        << " input field components " << spec.inputFields << ", "
-        << spec.nTypes() << " node types " << spec.nodeTypes << ", "
-        << spec.nOut() << " outputs " << spec.outputFields << " ("
-        << (spec.increment ? "increment" : "state") << " over deltaT "
-        << spec.deltaT << ")" << nl << endl;
+    // Settings and data
+    bsmsTrainSettings t(bsmsTrainSettings::read(dict, mesh, runTime, nRanks, rank));
+    const bsmsTrainingData d(readData(t, runTime, mesh, dict));
 
     // The model, resumed from the checkpoint if there is one
     const double rssStart = procStatusMB("VmRSS");
-    bsmsSurrogateModel m(mesh, spec, s);
-    // Noise on the state components that vary in the data (and are used)
-    std::vector<double> noiseStd(nState, 0.0);
-    if (noise > 0)
-    {
-        label nVar = 0;
-        for (label c = 0; c < nState; ++c)
-        {
-            const double v0 = train[0].states[0][c];
-            // Unused components count as constant
-            bool constant = true;
-            if (m.used(c))
-            {
-                for (const bsmsTrajectory& tr : train)
-                {
-                    for (const auto& x : tr.states)
-                    {
-                        for (std::size_t i = c; constant && i < x.size(); i += nState)
-                        {
-                            constant = x[i] == v0;
-                        }
-                    }
-                }
-            }
-            if (!constant)
-            {
-                noiseStd[c] = noise;
-                ++nVar;
-            }
-        }
-        Info<< "Input noise " << noise << " on " << nVar << " of " << nState
-            << " field components (none on those constant in the data or"
-            << " in the empty direction)" << nl;
-    }
-    Info<< "Graph: " << nCells << " cells, " << m.graph().levels.size()
+    bsmsSurrogateModel m(mesh, t.spec, t.trainer);
+    const std::vector<double> noiseStd(noiseLevels(m, d, t.noise));
+    Info<< "Graph: " << mesh.nCells() << " cells, " << m.graph().levels.size()
         << " levels (nodes " << m.levelSizes().c_str() << "), "
         << m.buildSeconds() << " s" << nl
         << "Model " << m.net().describe().c_str() << ", "
         << label(m.net().nParameters()) << " parameters" << nl;
-    if (!args.found("fresh") && isFile(checkpoint))
-    {
-        try
-        {
-            m.net().load(checkpoint);
-        }
-        catch (const std::exception& e)
-        {
-            FatalIOErrorInFunction(dict)
-                << "Cannot resume from the checkpoint " << checkpoint
-                << " (entry 'checkpoint' in " << dict.name() << "): "
-                << e.what() << nl << "    (use -fresh to start anew)"
-                << exit(FatalIOError);
-        }
-        Info<< "Resumed from " << checkpoint << " at step "
-            << label(m.net().step()) << nl;
-    }
+    resume(m, t.checkpoint, dict, args.found("fresh"));
     Info<< endl;
 
-    bsmsPstreamSum rankSum;
     if (parallel)
     {
         gnnTorch::setNumThreads(1);
         Info<< "Parallel run: " << nRanks << " ranks, synchronous data"
             << " parallel on the undecomposed case's data (processor"
             << " directories are not used): each rank trains on its shards"
-            << " of every step's batch of " << batch << " (this rank "
-            << nMineShards << " of " << nShards << " shards, " << nMine
+            << " of every step's batch of " << t.batch << " (this rank "
+            << t.nMineShards << " of " << t.nShards << " shards, " << t.nMine
             << " pairs), the shards' gradients summed over the ranks each"
-            << " step (Pstream, " << nShards << " x "
+            << " step (Pstream, " << t.nShards << " x "
             << label(m.net().nParameters()) + 1 << " floats); "
             << gnnTorch::numThreads() << " torch thread per rank" << nl
             << endl;
     }
-    Info<< "Batch of " << batch << " in " << nShards << " gradient shards"
-        << " (the same training on any number of ranks up to " << nShards
+    Info<< "Batch of " << t.batch << " in " << t.nShards << " gradient shards"
+        << " (the same training on any number of ranks up to " << t.nShards
         << ")" << nl << endl;
-    const bool master = Pstream::master();
-
-    auto save = [&]()
-    {
-        if (!master) return;
-        mkDir(checkpoint.path());
-        try
-        {
-            m.net().save(checkpoint);
-        }
-        catch (const std::exception& e)
-        {
-            FatalIOErrorInFunction(dict)
-                << "Cannot write the checkpoint " << checkpoint
-                << " (entry 'checkpoint'): " << e.what()
-                << exit(FatalIOError);
-        }
-        OFstream os(bsmsSpecFile(checkpoint));
-        os  << "// Model dictionary of " << checkpoint.name()
-            << ", written by bsmsTrain" << nl;
-        spec.write(os);
-    };
-
-    const fileName outDir(runTime.path()/"postProcessing"/"bsmsTrain");
-    autoPtr<OFstream> lossFile;
-    if (master)
-    {
-        mkDir(outDir);
-        lossFile.reset(new OFstream(outDir/"loss.dat"));
-        lossFile() << "# step loss lr" << nl;
-    }
-    // The reference a model must beat: the start state held (persistence)
-    for (const bsmsTrajectory& tr : valid)
-    {
-        if (!master) break;
-        const bsmsRolloutErrors r = bsmsPersistence(m, tr);
-        char buf[200];
-        std::snprintf
-        (
-            buf, sizeof(buf),
-            "Validation %s, the start state held: RMSE-50 %.4e  RMSE-all %.4e",
-            tr.dir.name().c_str(), r.rmse50, r.rmseAll
-        );
-        Info<< buf << nl;
-    }
-    Info<< endl;
-
-    autoPtr<OFstream> validationFile;
-    auto runValidation = [&](const label step, const bool last)
-    {
-        if (valid.empty() || !master) return;
-        if (!validationFile.valid())
-        {
-            validationFile.reset(new OFstream(outDir/"validation.dat"));
-            validationFile()
-                << "# step case RMSE-1 RMSE-50 RMSE-all inferenceSecondsPerStep"
-                << nl;
-        }
-        char buf[300];
-        for (const bsmsTrajectory& tr : valid)
-        {
-            const bsmsRolloutErrors r = bsmsValidate(m, tr);
-            std::snprintf
-            (
-                buf, sizeof(buf),
-                "Validation %s at step %d: RMSE-1 %.4e  RMSE-50 %.4e"
-                "  RMSE-all %.4e  (%d steps, %.2f ms per model step)",
-                tr.dir.name().c_str(), int(step), r.rmse1, r.rmse50,
-                r.rmseAll, int(r.mse.size()), 1e3*r.secondsPerStep
-            );
-            Info<< buf << endl;
-            std::snprintf
-            (
-                buf, sizeof(buf), "%d %s %.6e %.6e %.6e %.6e", int(step),
-                tr.dir.name().c_str(), r.rmse1, r.rmse50, r.rmseAll,
-                r.secondsPerStep
-            );
-            validationFile() << buf << endl;
-            if (last)
-            {
-                OFstream os(outDir/("rollout_" + tr.dir.name() + ".dat"));
-                os  << "# rollout of the model at training step " << step
-                    << " from t = " << tr.times[0] << " (deltaT "
-                    << spec.deltaT << ")" << nl
-                    << "# step time RMSE(step) RMSE(steps 1..step)" << nl;
-                double sum = 0;
-                for (std::size_t k = 0; k < r.mse.size(); ++k)
-                {
-                    sum += r.mse[k];
-                    std::snprintf
-                    (
-                        buf, sizeof(buf), "%d %.6g %.6e %.6e", int(k + 1),
-                        tr.times[k + 1], std::sqrt(r.mse[k]),
-                        std::sqrt(sum/(k + 1))
-                    );
-                    os << buf << nl;
-                }
-            }
-        }
-    };
 
     // Training
+    bsmsTrainingRun run(t, d, m, noiseStd, dict, runTime.path());
+    run.reportPersistence();
     const label start = m.net().step();
-    if (start >= nSteps)
-    {
-        Info<< "The checkpoint is at step " << start << " >= steps "
-            << nSteps << ": nothing to train" << nl;
-    }
-    const double rssTrain = procStatusMB("VmRSS");
     const auto tTrain = std::chrono::steady_clock::now();
     const double cpuTrain = cpuSeconds();
-    double validationSeconds = 0;
-    double lossSum = 0;
-    label lossCount = 0;
-    char buf[300];
-    std::vector<double> x, y, noisy;
-    label step = start;
-    while (step < nSteps)
-    {
-        std::mt19937_64 rng(s.seed*0x9E3779B97F4A7C15ULL + std::uint64_t(step));
-        std::uniform_int_distribution<label> pick(0, nPairs - 1);
-        std::normal_distribution<double> gauss(0.0, 1.0);
-        x.clear();
-        y.clear();
-        // The samples of this rank's shards; the draws of all (the same
-        // stream on every rank)
-        for (label b = 0; b < batch; ++b)
-        {
-            const auto& pr = pairs[pick(rng)];
-            const bsmsTrajectory& tr = train[pr.first];
-            if (b < shareFirst || b >= shareFirst + nMine)
-            {
-                if (noise > 0)
-                {
-                    const std::size_t nx = tr.states[pr.second].size();
-                    for (std::size_t i = 0; i < nx; ++i)
-                    {
-                        if (noiseStd[i % nState] > 0) gauss(rng);
-                    }
-                }
-                continue;
-            }
-            noisy = tr.states[pr.second];
-            if (noise > 0)
-            {
-                for (std::size_t i = 0; i < noisy.size(); ++i)
-                {
-                    const double sd = noiseStd[i % nState];
-                    if (sd > 0) noisy[i] += sd*gauss(rng);
-                }
-            }
-            m.appendInput(noisy, x);
-            m.appendTarget(noisy, tr.states[pr.second + 1], y);
-        }
-        double l = 0;
-        try
-        {
-            l = m.net().trainShards
-            (
-                x, y, shardFirst, nMineShards, nShards, batch, rankSum
-            );
-        }
-        catch (const std::exception& e)
-        {
-            FatalErrorInFunction
-                << "Training step " << step + 1 << ": " << e.what()
-                << exit(FatalError);
-        }
-        if (!std::isfinite(l))
-        {
-            FatalErrorInFunction
-                << "Training step " << step + 1 << ": the loss is " << l
-                << "; the last checkpoint is kept (lower lr?)"
-                << exit(FatalError);
-        }
-        lossSum += l;
-        ++lossCount;
-        ++step;
-        if (master)
-        {
-            std::snprintf
-            (
-                buf, sizeof(buf), "%d %.9e %.6e", int(step), l,
-                m.net().learningRate()
-            );
-            lossFile() << buf << nl;
-        }
-
-        const double el = secondsSince(tTrain) - validationSeconds;
-        // The master's clock decides, for all ranks
-        bool outOfTime = el >= maxTrainTime;
-        if (parallel) Pstream::scatter(outOfTime);
-        const bool last = step == nSteps || outOfTime;
-        if (step % printInterval == 0 || last)
-        {
-            const double eta =
-                min(el/(step - start)*(nSteps - step), maxTrainTime - el);
-            std::snprintf
-            (
-                buf, sizeof(buf), "step %d/%d  loss %.3e  lr %.3e  ETA %.0f s",
-                int(step), int(nSteps), lossSum/lossCount,
-                m.net().learningRate(), max(eta, 0.0)
-            );
-            Info<< buf << endl;
-            lossSum = 0;
-            lossCount = 0;
-        }
-        if (step % ckInterval == 0 || last)
-        {
-            save();
-            Info<< "Wrote the checkpoint " << checkpoint << " at step "
-                << step << endl;
-        }
-        if (step % validationInterval == 0 || last)
-        {
-            const auto tv = std::chrono::steady_clock::now();
-            runValidation(step, last);
-            validationSeconds += secondsSince(tv);
-        }
-        if (outOfTime)
-        {
-            Info<< "The training budget maxTrainTime " << maxTrainTime
-                << " s is spent at step " << step << endl;
-            break;
-        }
-    }
-    const double peak = procStatusMB("VmHWM");
+    const label step = run.run();
     if (step > start)
     {
-        const double el = secondsSince(tTrain) - validationSeconds;
-        std::snprintf
+        reportCosts
         (
-            buf, sizeof(buf),
-            "Training: %d steps in %.2f s (%.4f s per step; validation"
-            " %.1f s not counted)",
-            int(step - start), el, el/(step - start), validationSeconds
+            run, step - start, secondsSince(tTrain) - run.validationSeconds,
+            cpuSeconds() - cpuTrain, secondsSince(tTrain), rssStart, nRanks
         );
-        Info<< nl << buf << nl;
-        // The CPU time of the training (validation included): on a loaded
-        // machine the cores a run actually got
-        {
-            const scalar cpu = cpuSeconds() - cpuTrain;
-            const scalar cpuAll =
-                parallel ? returnReduce(cpu, sumOp<scalar>()) : cpu;
-            const double wall = secondsSince(tTrain);
-            std::snprintf
-            (
-                buf, sizeof(buf),
-                "Training CPU time: %.2f s in this process, %.2f s summed"
-                " over the %d rank(s) (%.2f cores on average)",
-                cpu, cpuAll, int(nRanks), cpuAll/max(wall, 1e-30)
-            );
-            Info<< buf << nl;
-        }
-        if (parallel)
-        {
-            // The share of the time in the gradient sum (waiting for the
-            // slower rank included), master and the most of any rank
-            const scalar commMaster = rankSum.seconds();
-            const scalar commMax =
-                returnReduce(scalar(rankSum.seconds()), maxOp<scalar>());
-            std::snprintf
-            (
-                buf, sizeof(buf),
-                "Communication: %d gradient sums of %.3f MB, %.3f s on the"
-                " master (%.1f %% of the training time; the most of any"
-                " rank %.3f s), waiting for the slower rank included",
-                int(rankSum.nCalls()), rankSum.bytes()/1e6, commMaster,
-                100*commMaster/max(el, 1e-30), commMax
-            );
-            Info<< buf << nl;
-        }
-        std::snprintf
-        (
-            buf, sizeof(buf),
-            "Memory: peak resident %.1f MB; %.1f MB before the model,"
-            " %.1f MB before training; training peak %.1f MB above that",
-            peak, rssStart, rssTrain, peak - rssTrain
-        );
-        Info<< buf << nl;
     }
-    else if (!valid.empty())
+    else if (!d.valid.empty())
     {
-        runValidation(step, true);
+        run.validate(step, true);
     }
 
-    // The loss on every pair without noise
-    {
-        double sum = 0;
-        // Parallel: every rank a contiguous share of the pairs
-        const label p0 = rank*nPairs/nRanks;
-        const label p1 = (rank + 1)*nPairs/nRanks;
-        for (label p = p0; p < p1; ++p)
-        {
-            const auto& pr = pairs[p];
-            const bsmsTrajectory& tr = train[pr.first];
-            x.clear();
-            y.clear();
-            m.appendInput(tr.states[pr.second], x);
-            m.appendTarget(tr.states[pr.second], tr.states[pr.second + 1], y);
-            sum += m.net().loss(x, y);
-        }
-        if (parallel) reduce(sum, sumOp<scalar>());
-        std::snprintf(buf, sizeof(buf), "%.6e", sum/nPairs);
-        Info<< "Final one-step loss over " << nPairs << " pairs (no noise): "
-            << buf << nl;
-    }
-
-    // The ranks hold the same model (the same gradients and Adam steps)
-    if (parallel)
-    {
-        std::snprintf
-        (
-            buf, sizeof(buf), "%016llx",
-            static_cast<unsigned long long>(m.net().parameterHash())
-        );
-        List<word> hashes(nRanks);
-        hashes[rank] = buf;
-        Pstream::gatherList(hashes);
-        if (master)
-        {
-            label nSame = 0;
-            for (const word& h : hashes) nSame += (h == hashes[0]);
-            if (nSame != nRanks)
-            {
-                FatalErrorInFunction
-                    << "The ranks' parameters differ after training (hashes "
-                    << hashes << "): the data-parallel steps went out of"
-                    << " step; the checkpoint is the master's"
-                    << exit(FatalError);
-            }
-            Info<< "Parameters identical on all " << nRanks << " ranks"
-                << " (hash " << hashes[0] << ")" << nl;
-        }
-    }
-
-    // The training range recorded in the model dictionary
-    {
-        Info<< "Training range of the inputs (inputMin, inputMax of "
-            << bsmsSpecFile(checkpoint).name() << "):";
-        label o = 0;
-        forAll(spec.inputFields, i)
-        {
-            for (label c = 0; c < spec.inputComponents[i]; ++c)
-            {
-                if (!m.used(o + c)) continue;
-                std::snprintf
-                (
-                    buf, sizeof(buf), " %s%s [%.4g, %.4g]",
-                    spec.inputFields[i].c_str(),
-                    spec.inputComponents[i] == 3
-                  ? (c == 0 ? "_x" : c == 1 ? "_y" : "_z") : "",
-                    spec.inputMin[o + c], spec.inputMax[o + c]
-                );
-                Info<< buf;
-            }
-            o += spec.inputComponents[i];
-        }
-        Info<< nl;
-    }
+    reportFinalLoss(m, d);
+    checkRanksAgree(m);
+    reportTrainingRange(t, m);
 
     Info<< nl << "End" << nl << endl;
     return 0;

@@ -47,6 +47,10 @@ trainerConfig configOf(const trainerSettings& s)
     c.noiseStd = s.noiseStd;
     c.normAccumulations = s.normAccumulations;
     c.seed = s.seed;
+    c.rolloutSteps = s.rolloutSteps;
+    c.rolloutBackprop = s.rolloutBackprop;
+    c.outputColumns = s.outputColumns;
+    c.outputMask = s.outputMask;
     return c;
 }
 

@@ -38,6 +38,36 @@ graphNetTrainer::graphNetTrainer
           + std::to_string(netConfig_.nIn) + ")"
         );
     }
+    if (config_.rolloutSteps < 1)
+    {
+        throw std::runtime_error
+        (
+            "graphNetTrainer: rolloutSteps "
+          + std::to_string(config_.rolloutSteps) + " < 1"
+        );
+    }
+    if (config_.rolloutSteps > 1)
+    {
+        bool ok =
+            int(config_.outputColumns.size()) == netConfig_.nOut
+         && int(config_.outputMask.size()) == netConfig_.nOut;
+        for (std::size_t j = 0; ok && j < config_.outputColumns.size(); ++j)
+        {
+            ok = config_.outputColumns[j] >= 0
+              && config_.outputColumns[j] < netConfig_.nIn;
+        }
+        if (!ok)
+        {
+            throw std::runtime_error
+            (
+                "graphNetTrainer: rolloutSteps > 1 needs one input column"
+                " in [0, " + std::to_string(netConfig_.nIn) + ") and one"
+                " mask value per output (" + std::to_string(netConfig_.nOut)
+              + "), given " + std::to_string(config_.outputColumns.size())
+              + " and " + std::to_string(config_.outputMask.size())
+            );
+        }
+    }
     torch::manual_seed(config_.seed);
     net_ = newGraphNetwork(h, netConfig_);
     inNorm_ = normaliser(netConfig_.nIn, config_.normAccumulations);
@@ -111,10 +141,73 @@ double graphNetTrainer::learningRate() const
 }
 
 
-torch::Tensor graphNetTrainer::prepare(torch::Tensor x, const torch::Tensor& y)
+torch::Tensor graphNetTrainer::bySteps(const torch::Tensor& y) const
+{
+    const std::int64_t K = config_.rolloutSteps;
+    if (K == 1) return y;
+    if (y.dim() != 3 || y.size(0) % K != 0)
+    {
+        throw std::runtime_error
+        (
+            "graphNetTrainer: rolloutSteps " + std::to_string(K) + " needs"
+            " the targets as [samples x " + std::to_string(K) + ", nodes,"
+            " outputs], got " + c10::str(y.sizes())
+        );
+    }
+    return y.reshape({-1, K, y.size(1), y.size(2)});
+}
+
+
+torch::Tensor graphNetTrainer::firstStep(const torch::Tensor& y) const
+{
+    return config_.rolloutSteps == 1 ? y : y.select(1, 0);
+}
+
+
+torch::Tensor graphNetTrainer::trainingLoss
+(
+    torch::Tensor x,
+    const torch::Tensor& y
+)
+{
+    const std::int64_t K = config_.rolloutSteps;
+    if (K == 1)
+    {
+        return torch::mse_loss(net_->forward(inNorm_->forward(x)), outNorm_->forward(y));
+    }
+    if (x.dim() == 2) x = x.unsqueeze(0);
+    const torch::Tensor cols = torch::tensor(config_.outputColumns, torch::kInt64);
+    std::vector<float> m(config_.outputMask.begin(), config_.outputMask.end());
+    const torch::Tensor mask = torch::tensor(m, x.options());
+    // Rollout over K steps: r_j = true_j - x_j on the output columns
+    torch::Tensor total, r;
+    for (std::int64_t j = 0; j < K; ++j)
+    {
+        const torch::Tensor target = j ? y.select(1, j) + r : y.select(1, 0);
+        const torch::Tensor pred = net_->forward(inNorm_->forward(x));
+        const torch::Tensor l = torch::mse_loss(pred, outNorm_->forward(target));
+        total = j ? total + l : l;
+        if (j + 1 < K)
+        {
+            const torch::Tensor p = outNorm_->inverse(pred)*mask;
+            r = (target - p)*mask;
+            x = torch::index_add(x, -1, cols, p);
+            if (!config_.rolloutBackprop)
+            {
+                x = x.detach();
+                r = r.detach();
+            }
+        }
+    }
+    return total/double(K);
+}
+
+
+torch::Tensor graphNetTrainer::prepare(torch::Tensor x, const torch::Tensor& yIn)
 {
     if (step_ < config_.normAccumulations)
     {
+        const torch::Tensor y = firstStep(yIn);
         inNorm_->accumulate(x);
         outNorm_->accumulate(y);
     }
@@ -154,13 +247,12 @@ double graphNetTrainer::trainStep
     const torch::Tensor& yIn
 )
 {
-    const torch::Tensor y = checked(yIn, netConfig_.nOut);
+    const torch::Tensor y = bySteps(checked(yIn, netConfig_.nOut));
     const torch::Tensor x = prepare(checked(xIn, netConfig_.nIn), y);
 
     net_->train();
     optimizer_->zero_grad();
-    const torch::Tensor pred = net_->forward(inNorm_->forward(x));
-    const torch::Tensor l = torch::mse_loss(pred, outNorm_->forward(y));
+    const torch::Tensor l = trainingLoss(x, y);
     l.backward();
     optimizer_->step();
     ++step_;
@@ -205,6 +297,8 @@ double graphNetTrainer::trainShards
     torch::Tensor y = checked(yIn, netConfig_.nOut);
     if (x.dim() == 2) x = x.unsqueeze(0);
     if (y.dim() == 2) y = y.unsqueeze(0);
+    // [n, K, N, nOut] with K = rolloutSteps > 1
+    y = bySteps(y);
     // Shard k: samples [off(k), off(k + 1)) of the batch
     auto off = [nTotal, nShards](const std::int64_t k)
     {
@@ -252,7 +346,7 @@ double graphNetTrainer::trainShards
                 o += 2*nc;
             };
             put(mine(x, k).detach().reshape({-1, nIn}).to(torch::kFloat64), nIn);
-            put(mine(y, k).detach().reshape({-1, nOut}).to(torch::kFloat64), nOut);
+            put(firstStep(mine(y, k)).detach().reshape({-1, nOut}).to(torch::kFloat64), nOut);
         }
         sumOverRanksD(st);
         const std::int64_t nNodes = x.size(1);
@@ -312,8 +406,7 @@ double graphNetTrainer::trainShards
                *torch::tensor(sd, xs.options());
         }
         optimizer_->zero_grad();
-        const torch::Tensor pred = net_->forward(inNorm_->forward(xs));
-        const torch::Tensor l = torch::mse_loss(pred, outNorm_->forward(ys));
+        const torch::Tensor l = trainingLoss(xs, ys);
         l.backward();
 
         torch::NoGradGuard noGrad;

@@ -81,6 +81,15 @@ Foam::bsmsSurrogateModel::bsmsSurrogateModel
     ts.latent = sizes.latent;
     ts.hidden = sizes.hidden;
     ts.nMessagePasses = sizes.nMessagePasses;
+    // Rollout training advances the outputs' state columns of the input
+    // (x = [state, node types]), not the empty direction
+    ts.outputColumns.clear();
+    ts.outputMask.clear();
+    for (const label c : outInState_)
+    {
+        ts.outputColumns.push_back(c);
+        ts.outputMask.push_back(used_[c]);
+    }
     try
     {
         net_.reset(new gnnTorch::bsmsTrainerFacade(graph_, ts));
