@@ -27,11 +27,22 @@
 #include <condition_variable>
 #include <mutex>
 #include <thread>
+#include <cstdlib>
+#include <unistd.h>
 
 using namespace gnnTorch;
 
 namespace
 {
+
+// A file name in $TMPDIR (or /tmp) unique to this process, so that two
+// suites on one machine never share a scratch file
+std::string scratchFile(const std::string& name)
+{
+    const char* dir = std::getenv("TMPDIR");
+    return std::string(dir && *dir ? dir : "/tmp") + "/mpmFoamTorchTest_"
+        + std::to_string(::getpid()) + "_" + name;
+}
 
 // One explicit step of du/dt = D lap(u) - c du/dx on the grid graph
 // (unit spacing, first-order upwind, c > 0): du_i = D sum_j (u_j - u_i)
@@ -227,7 +238,7 @@ TEST(graphNetTorch, checkpointBitForBit)
         const torch::Tensor x = data[11].first;
         EXPECT_TRUE(torch::equal(A.predict(x), A2.predict(x)));
 
-        const std::string file = "/tmp/mpmFoamTorchTest_" + type + ".pt";
+        const std::string file = scratchFile(type + ".pt");
         A.save(file);
         trainerConfig other = tc;
         other.seed = 99;
@@ -269,7 +280,7 @@ TEST(graphNetTorch, badInputs)
     };
     EXPECT_NE(message([&]{ A.load("/nonexistent/model.pt"); }).find("cannot read the model file"), std::string::npos);
 
-    const std::string file = "/tmp/mpmFoamTorchTest_bad.pt";
+    const std::string file = scratchFile("bad.pt");
     graphNetConfig other = smallConfig("bsms");
     other.nOut = 2;
     graphNetTrainer B(h, other, smallTraining());
