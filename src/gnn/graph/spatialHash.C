@@ -17,13 +17,18 @@ inline std::uint64_t Foam::spatialHash::bucket
     const std::int64_t k
 ) const
 {
-    // Large odd multipliers spread neighbouring cells over the buckets;
-    // the top bits of the product are the best mixed
+    // Bricks of 4 x 4 x 4 cells hashed to slots of 64 consecutive buckets:
+    // a cell's neighbours mostly share its brick, so their points lie near
+    // each other in memory.  Large odd multipliers spread the bricks; the
+    // top bits of the product are the best mixed.
+    const std::uint64_t local =
+        std::uint64_t(i & 3) | std::uint64_t(j & 3) << 2
+      | std::uint64_t(k & 3) << 4;
     const std::uint64_t v =
-        std::uint64_t(i)*0x9E3779B97F4A7C15ull
-      ^ std::uint64_t(j)*0xC2B2AE3D27D4EB4Full
-      ^ std::uint64_t(k)*0x165667B19E3779F9ull;
-    return (v ^ (v >> 29)) & mask_;
+        std::uint64_t(i >> 2)*0x9E3779B97F4A7C15ull
+      ^ std::uint64_t(j >> 2)*0xC2B2AE3D27D4EB4Full
+      ^ std::uint64_t(k >> 2)*0x165667B19E3779F9ull;
+    return ((v ^ (v >> 29)) & mask_) << 6 | local;
 }
 
 
@@ -41,9 +46,9 @@ Foam::spatialHash::spatialHash(const UList<point>& x, const scalar radius)
             << exit(FatalError);
     }
     const label n = x.size();
-    std::uint64_t nb = 1;
+    std::uint64_t nb = 64;
     while (nb < std::uint64_t(2*n)) nb <<= 1;
-    mask_ = nb - 1;
+    mask_ = nb/64 - 1;
 
     // Cells (2^52 cells either way keeps floor exact and the cell a label)
     const scalar limit = 4.5e15;
@@ -105,6 +110,11 @@ void Foam::spatialHash::pairs
     std::vector<label> sg(grouped ? n : 0);
     for (label m = 0; grouped && m < n; ++m) sg[m] = group[sorted_[m]];
 
+    // Room for one pair per point (no regrowth on the way for the usual
+    // contact surfaces; more just grows)
+    a.reserve(a.size() + n);
+    b.reserve(b.size() + n);
+
     // Runs of entries of one cell [m0, m1): the 27 neighbour cells are
     // looked up once per run, not once per point (fewer random accesses)
     const scalar r2 = h_*h_;
@@ -126,22 +136,21 @@ void Foam::spatialHash::pairs
         {
             const std::int64_t c0 = ci[0] + di, c1 = ci[1] + dj, c2 = ci[2] + dk;
             const std::uint64_t bk = bucket(c0, c1, c2);
-            // Entries after m0 only; each pair once, from its first entry
+            // Entries after m0 only; each pair once, from its first entry.
+            // No cell comparison is needed: the 27 cells differ by less
+            // than 4 in each direction, so they fall in 27 different
+            // buckets of their bricks, and a point of another cell that
+            // shares this bucket lies 4 cells (3 radii) away or more.
             for (label q = max(start_[bk], m0 + 1); q < start_[bk + 1]; ++q)
             {
-                const std::int64_t* cq = &sc_[3*q];
-                // Another cell of the same bucket: found from its own cell
-                if (cq[0] != c0 || cq[1] != c1 || cq[2] != c2) continue;
                 const point& xq = sx_[q];
                 for (label m = m0; m < m1 && m < q; ++m)
                 {
                     if (grouped && sg[m] == sg[q]) continue;
-                    if (magSqr(xq - sx_[m]) < r2)
-                    {
-                        const label i = sorted_[m], j = sorted_[q];
-                        a.append(min(i, j));
-                        b.append(max(i, j));
-                    }
+                    if (magSqr(xq - sx_[m]) >= r2) continue;
+                    const label i = sorted_[m], j = sorted_[q];
+                    a.append(min(i, j));
+                    b.append(max(i, j));
                 }
             }
         }
