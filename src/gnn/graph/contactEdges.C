@@ -20,14 +20,8 @@ Foam::meshGraph Foam::contactEdges(const meshGraph& g, const scalar radius)
     const pointField& x = g.positions();
     if (n == 0) return meshGraph(x, labelList(), labelList());
 
-    // Cluster of every node
-    labelList cOff, cNodes;
-    const label nClusters = g.clusters(cOff, cNodes);
-    labelList cluster(n);
-    for (label k = 0; k < nClusters; ++k)
-    {
-        for (label m = cOff[k]; m < cOff[k + 1]; ++m) cluster[cNodes[m]] = k;
-    }
+    labelList cluster;
+    g.clusterOf(cluster);
 
     // Pairs of different clusters within radius (O(N), spatialHash)
     DynamicList<label> a, b;

@@ -48,12 +48,7 @@ Foam::lagrangianGraph::lagrangianGraph
             << kind.size() << " node kinds for " << reference.nNodes()
             << " nodes" << exit(FatalError);
     }
-    labelList cOff, cNodes;
-    nBodies_ = mesh_.clusters(cOff, cNodes);
-    for (label k = 0; k < nBodies_; ++k)
-    {
-        for (label m = cOff[k]; m < cOff[k + 1]; ++m) body_[cNodes[m]] = k;
-    }
+    nBodies_ = mesh_.clusterOf(body_);
 }
 
 

@@ -208,10 +208,11 @@ Foam::label Foam::meshGraph::bfs
 // order: the first node not yet in a cluster is the start s of a BFS, and
 // the nodes it reaches (D[n] < infinity) form its cluster C.  One BFS per
 // cluster, O(N + E) in all.
-Foam::label Foam::meshGraph::clusters(labelList& offsets, labelList& nodes) const
+Foam::label Foam::meshGraph::clusterOf(labelList& cluster) const
 {
     const label n = nNodes();
-    labelList cluster(n, -1);
+    cluster.setSize(n);
+    cluster = -1;
     labelList queue(n);
     const label* off = offsets_.cdata();
     const label* nbr = neighbours_.cdata();
@@ -238,6 +239,15 @@ Foam::label Foam::meshGraph::clusters(labelList& offsets, labelList& nodes) cons
         }
         ++nClusters;
     }
+    return nClusters;
+}
+
+
+Foam::label Foam::meshGraph::clusters(labelList& offsets, labelList& nodes) const
+{
+    const label n = nNodes();
+    labelList cluster;
+    const label nClusters = clusterOf(cluster);
 
     // Counting sort by cluster: nodes ascending within each cluster
     offsets.setSize(nClusters + 1);
