@@ -168,6 +168,7 @@ Foam::csmpmStepper::csmpmStepper
     }
     checkInside();
     solver_.initialise(P_);
+    solver_.setTime(mesh.time().value());
     readGhost(cDict, gasDict);
     {
         scalar mMin = GREAT;

@@ -233,6 +233,14 @@ int main(int argc, char *argv[])
             << exit(FatalError);
     }
     solver.initialise(P);
+    solver.setTime(runTime.value());
+    for (const mpmActuator& a : solver.actuators())
+    {
+        Info<< "MPM actuator " << a.name() << ": box at t = "
+            << runTime.timeName() << ' ' << a.box(runTime.value())
+            << ", fastest speed on its path " << a.maxSpeed() << " m/s"
+            << nl;
+    }
     Info<< "Particles: " << returnReduce(P.size(), sumOp<label>()) << nl
         << endl;
 
@@ -313,6 +321,16 @@ int main(int argc, char *argv[])
                     Info<< "  friction work = "
                         << returnReduce(contact->frictionWork(), sumOp<scalar>());
                 }
+            }
+            for (const mpmActuator& a : solver.actuators())
+            {
+                Info<< "  actuator " << a.name() << ": displacement "
+                    << a.displacement(runTime.value()) << " force "
+                    << returnReduce(a.force(), sumOp<vector>());
+            }
+            if (solver.actuators().size())
+            {
+                Info<< "  actuator work " << solver.actuatorWork();
             }
             Info<< nl;
         }

@@ -41,7 +41,7 @@ Usage
     \endverbatim
     \table
         Property  | Description                                  | Required | Default
-        graph     | nodes: cells (centres, edges = internal faces) or points (edges = mesh edges) | yes |
+        graph     | nodes: cells (centres, edges = internal faces), points (edges = mesh edges) or lagrangian (a recorded cloud) | yes |
         seeding   | closeCenter (Algorithm 2) or minAve (Algorithm 3) | yes |
         minNodes  | stop at the first level with fewer nodes     | no  | 100
         maxLevels | most levels, the finest included             | no  | 32
@@ -50,6 +50,24 @@ Usage
     \endtable
     Bad or missing entries stop with a FatalIOError naming the file and the
     entry.  Serial only.
+
+    Moving solids (graph lagrangian): the nodes are the material points of
+    a recorded MPM case and its actuators' nodes (lagrangianRecording: the
+    entries cloud, meshRadius, worldRadius, actuatorSpacing), the mesh
+    edges join nodes of a body within meshRadius in the first written
+    frame, and the contact edges are the world edges at the frame shown
+    (entry time, default the latest written): nodes of different bodies
+    within worldRadius.  The levels pool the reference graph; the VTK
+    shows every level at the world positions of the frame, with the point
+    field kind (0 free, 1 actuator, 2 fixed).
+    \verbatim
+        graph           lagrangian;
+        seeding         closeCenter;
+        meshRadius      0.015;
+        worldRadius     0.012;
+        actuatorSpacing 0.01;
+        time            0.3;            // optional: the frame shown
+    \endverbatim
 
 \*---------------------------------------------------------------------------*/
 
@@ -62,6 +80,7 @@ Usage
 #include "dictionaryChecks.H"
 #include "meshGraph.H"
 #include "contactEdges.H"
+#include "lagrangianRecording.H"
 #include "bsmsPooling.H"
 #include "bsmsTransition.H"
 
@@ -81,7 +100,9 @@ void writeLevel
     const fileName& file,
     const bsmsPooling& P,
     const label l,
-    const scalarUList& weights
+    const scalarUList& weights,
+    const pointField& shown,
+    const labelUList& kind
 )
 {
     const meshGraph& g = P.graph(l);
@@ -98,8 +119,9 @@ void writeLevel
         << "ASCII" << nl
         << "DATASET POLYDATA" << nl
         << "POINTS " << n << " double" << nl;
-    for (const point& p : g.positions())
+    for (const label i : finest)
     {
+        const point& p = shown[i];
         os  << p.x() << ' ' << p.y() << ' ' << p.z() << nl;
     }
     os  << "VERTICES " << n << ' ' << 2*n << nl;
@@ -129,6 +151,12 @@ void writeLevel
     os  << "SCALARS weight double 1" << nl
         << "LOOKUP_TABLE default" << nl;
     for (const scalar w : weights) os << w << nl;
+    if (kind.size())
+    {
+        os  << "SCALARS kind int 1" << nl
+            << "LOOKUP_TABLE default" << nl;
+        for (const label i : finest) os << kind[i] << nl;
+    }
 }
 
 
@@ -232,35 +260,107 @@ int main(int argc, char *argv[])
 
     if (!dict.found("graph", keyType::LITERAL))
     {
-        missingEntry(dict, "graph", "one of 2(cells points)");
+        missingEntry(dict, "graph", "one of 3(cells points lagrangian)");
     }
-    const meshGraph::nodeType type = getEnum
-    (
-        dict, "graph", meshGraph::nodeTypeNames, meshGraph::nodeType::cells
-    );
+    const bool lagrangian =
+        dict.get<word>("graph") == "lagrangian";
     bsmsPooling P(dict);
-    const bool withContact = dict.found("contactRadius", keyType::LITERAL);
-    const scalar radius =
-        withContact ? getPositive(dict, "contactRadius") : scalar(0);
+
+    // The finest graph, its contact (world) edges, the positions shown
+    // and, for a Lagrangian graph, the node kinds
+    const auto t0 = std::chrono::steady_clock::now();
+    autoPtr<meshGraph> finePtr, contactPtr;
+    pointField shown;
+    labelList kinds;
+    bool withContact = false;
+    scalar radius = 0;
+    if (lagrangian)
+    {
+        // The first written time (the material positions) and the one
+        // shown (entry time, default the latest)
+        instantList times(runTime.times());
+        DynamicList<instant> written;
+        for (const instant& t : times)
+        {
+            if (t.name() != "constant") written.append(t);
+        }
+        if (written.empty())
+        {
+            FatalIOErrorInFunction(dict)
+                << "graph lagrangian: the case " << runTime.path()
+                << " has no written time" << exit(FatalIOError);
+        }
+        instant shownTime(written.last());
+        if (dict.found("time", keyType::LITERAL))
+        {
+            const scalar t = getAs<scalar>(dict, "time", "a written time");
+            label k = -1;
+            forAll(written, i)
+            {
+                if (mag(written[i].value() - t) < 1e-9*max(1, mag(t))) k = i;
+            }
+            if (k < 0)
+            {
+                OStringStream allowed;
+                allowed << "a written time of the case, from "
+                    << written.first().name() << " to "
+                    << written.last().name();
+                badEntry(dict, "time", Foam::name(t), allowed.str());
+            }
+            shownTime = written[k];
+        }
+        instantList frames(1, written.first());
+        if (shownTime.name() != written.first().name())
+        {
+            frames.append(shownTime);
+        }
+        const lagrangianRecording rec(runTime, frames, dict);
+        const lagrangianGraph g(rec.graph(rec.nFrames() - 1));
+        finePtr.reset(new meshGraph(g.meshEdges()));
+        contactPtr.reset(new meshGraph(g.worldEdges()));
+        shown = g.x();
+        kinds.setSize(g.nNodes());
+        forAll(kinds, i) kinds[i] = label(g.kind()[i]);
+        withContact = true;
+        radius = rec.worldRadius();
+        Info<< "Lagrangian graph of the cloud at t = " << shownTime.name()
+            << " (material positions: t = " << written.first().name()
+            << "): " << rec.nPoints() << " material points, "
+            << rec.nNodes() - rec.nPoints() << " actuator nodes, "
+            << g.nBodies() << " bodies; meshRadius " << rec.meshRadius()
+            << ", worldRadius " << rec.worldRadius() << nl;
+    }
+    else
+    {
+        const meshGraph::nodeType type = getEnum
+        (
+            dict, "graph", meshGraph::nodeTypeNames, meshGraph::nodeType::cells
+        );
+        withContact = dict.found("contactRadius", keyType::LITERAL);
+        radius = withContact ? getPositive(dict, "contactRadius") : scalar(0);
+        finePtr.reset(new meshGraph(mesh, type));
+        contactPtr.reset
+        (
+            new meshGraph
+            (
+                withContact
+              ? contactEdges(finePtr(), radius)
+              : meshGraph(finePtr->positions(), labelList(), labelList())
+            )
+        );
+        shown = finePtr->positions();
+    }
+    const meshGraph& fine = finePtr();
+    const meshGraph& contact = contactPtr();
+    const double tGraph = secondsSince(t0);
 
     Info<< "BSMS levels of " << runTime.path() << nl
-        << "    graph " << meshGraph::nodeTypeNames[type]
+        << "    graph " << dict.get<word>("graph")
         << ", seeding " << P.seeding().type()
         << ", minNodes " << P.minNodes() << ", maxLevels " << P.maxLevels()
         << ", balance " << P.balance();
-    if (withContact) Info<< ", contactRadius " << radius;
+    if (withContact) Info<< ", contact radius " << radius;
     Info<< nl << endl;
-
-    // The finest graph and its contact edges
-    const auto t0 = std::chrono::steady_clock::now();
-    const meshGraph fine(mesh, type);
-    const meshGraph contact
-    (
-        withContact
-      ? contactEdges(fine, radius)
-      : meshGraph(fine.positions(), labelList(), labelList())
-    );
-    const double tGraph = secondsSince(t0);
 
     const auto t1 = std::chrono::steady_clock::now();
     P.build(fine, contact);
@@ -343,7 +443,7 @@ int main(int argc, char *argv[])
         {
             if (l > 0) w = T[l - 1].coarseWeights();
             const fileName file(dir/("level" + Foam::name(l) + ".vtk"));
-            writeLevel(file, P, l, w);
+            writeLevel(file, P, l, w, shown, kinds);
             Info<< "Wrote " << file << nl;
         }
     }

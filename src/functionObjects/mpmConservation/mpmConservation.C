@@ -79,6 +79,13 @@ bool Foam::functionObjects::mpmConservation::execute()
     setResult("gravitational", t.gravitational);
     setResult("total", total);
 
+    // Actuators: displacement and this step's force on the material, and
+    // their work (which the material's energy may gain)
+    const PtrList<mpmActuator>& acts = state.solver().actuators();
+    List<vector> actForce(acts.size());
+    forAll(acts, k) actForce[k] = returnReduce(acts[k].force(), sumOp<vector>());
+    const scalar actWork = acts.empty() ? 0 : state.solver().actuatorWork();
+
     if (Pstream::master())
     {
         if (!file_)
@@ -97,8 +104,17 @@ bool Foam::functionObjects::mpmConservation::execute()
                 << "# t [s]\tmass [kg]\txCM [m]\tyCM [m]\tzCM [m]"
                 << "\tpx [kg m/s]\tpy [kg m/s]\tpz [kg m/s]"
                 << "\tLx [kg m2/s]\tLy [kg m2/s]\tLz [kg m2/s]"
-                << "\tkinetic [J]\tstrain [J]\tgravitational [J]\ttotal [J]"
-                << nl;
+                << "\tkinetic [J]\tstrain [J]\tgravitational [J]\ttotal [J]";
+            for (const mpmActuator& a : acts)
+            {
+                const word& n = a.name();
+                file_()
+                    << '\t' << n << "_dx [m]\t" << n << "_dy [m]\t" << n
+                    << "_dz [m]\t" << n << "_Fx [N]\t" << n << "_Fy [N]\t"
+                    << n << "_Fz [N]";
+            }
+            if (acts.size()) file_() << "\tactuatorWork [J]";
+            file_() << nl;
         }
         OFstream& os = file_();
         os  << time_.value() << '\t' << t.mass << '\t'
@@ -108,7 +124,16 @@ bool Foam::functionObjects::mpmConservation::execute()
             << t.angularMomentum.x() << '\t' << t.angularMomentum.y() << '\t'
             << t.angularMomentum.z() << '\t'
             << t.kinetic << '\t' << t.strain << '\t' << t.gravitational
-            << '\t' << total << endl;   // flushed: kept if the run stops
+            << '\t' << total;
+        forAll(acts, k)
+        {
+            const vector d = acts[k].displacement(time_.value());
+            const vector& f = actForce[k];
+            os  << '\t' << d.x() << '\t' << d.y() << '\t' << d.z()
+                << '\t' << f.x() << '\t' << f.y() << '\t' << f.z();
+        }
+        if (acts.size()) os << '\t' << actWork;
+        os  << endl;   // flushed: kept if the run stops
     }
     return true;
 }

@@ -194,6 +194,9 @@ Foam::mpmSolver::mpmSolver
     kernel_(mpmKernel::New(dict, mesh)),
     transfer_(mpmTransfer::New(dict, mesh)),
     boundary_(boundary),
+    actuators_(mpmActuator::readAll(dict, mesh)),
+    time_(0),
+    stepDt_(0),
     gravity_(Zero),
     CFL_(0.5),
     maxDeltaT_(1e30),
@@ -443,6 +446,10 @@ Foam::scalar Foam::mpmSolver::deltaT(const mpmParticles& P) const
     }
     scalar vMax2 = 0;
     for (const vector& v : P.v) vMax2 = max(vMax2, magSqr(v));
+    for (const mpmActuator& a : actuators_)
+    {
+        vMax2 = max(vMax2, sqr(a.maxSpeed()));
+    }
     if (par_)
     {
         // One gather and scatter for the speeds and |v|max
@@ -519,7 +526,9 @@ bool Foam::mpmSolver::energyBounded(const mpmParticles& P)
 {
     scalar kinetic = 0, strain = 0;
     const scalar E = mechanicalEnergy(P, kinetic, strain);
-    const scalar growth = E - energy0_;
+    // The actuators' work on the material is energy it may hold
+    const scalar W = actuators_.empty() ? scalar(0) : actuatorWork();
+    const scalar growth = E - energy0_ - W;
     if
     (
         std::isfinite(E)
@@ -531,7 +540,9 @@ bool Foam::mpmSolver::energyBounded(const mpmParticles& P)
     OStringStream os;
     os  << "the mechanical energy (kinetic + strain + gravitational) grew"
         << " from " << energy0_ << " to " << E << ", by more than the "
-        << energyGrowthBound_ << " the system can hold: the discretisation"
+        << energyGrowthBound_ << " the system can hold";
+    if (!actuators_.empty()) os << " with the actuators' work " << W;
+    os  << ": the discretisation"
         << " is unstable (" << deltaTReason().c_str() << "). A lower CFL"
         << " (above the kernel's limit?) or the FLIP/PIC transfer (APIC"
         << " at extreme deformation?) may keep it bounded";
@@ -597,6 +608,7 @@ bool Foam::mpmSolver::beginStep(mpmParticles& P)
 void Foam::mpmSolver::gridUpdate(const mpmParticles& P, const scalar dt)
 {
     const label nP = P.size();
+    stepDt_ = dt;
 
     // 3.-5. Internal (2.8) and gravity (2.9) forces
     const bool gravity = magSqr(gravity_) > 0;
@@ -665,6 +677,38 @@ void Foam::mpmSolver::gridUpdate(const mpmParticles& P, const scalar dt)
 void Foam::mpmSolver::applyBoundary()
 {
     boundary_.apply(grid_.isActive, grid_.newVelocity);
+    if (actuators_.empty()) return;
+
+    // Each copy of a vertex held by several ranks counts its share
+    const UList<scalar>* share = nullptr;
+    if (par_)
+    {
+        actuatorShare_.setSize(mesh_.nVertices());
+        for (const label i : grid_.active) actuatorShare_[i] = 1;
+        par_->sumShared(actuatorShare_, &grid_.isActive);
+        for (const label i : grid_.active)
+        {
+            actuatorShare_[i] = 1/actuatorShare_[i];
+        }
+        share = &actuatorShare_;
+    }
+    for (mpmActuator& a : actuators_)
+    {
+        a.apply
+        (
+            time_, stepDt_, mesh_.vertices(), grid_.active, grid_.mass,
+            grid_.newVelocity, share
+        );
+    }
+}
+
+
+Foam::scalar Foam::mpmSolver::actuatorWork() const
+{
+    scalar W = 0;
+    for (const mpmActuator& a : actuators_) W += a.work();
+    if (par_) reduce(W, sumOp<scalar>());
+    return W;
 }
 
 
@@ -824,6 +868,7 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
         }
     }
 
+    time_ += dt;
     return true;
 }
 
