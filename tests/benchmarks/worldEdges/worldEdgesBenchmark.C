@@ -40,6 +40,10 @@ double timeSearch
 {
     double best = 1e30;
     hashTime = 1e30;
+    // As a graph rebuilt every model step uses it: one hash and one pair
+    // list, rebuilt (their memory reused)
+    spatialHash hash(1.0);
+    DynamicList<label> a, b;
     for (int rep = 0; rep < 5; ++rep)
     {
         label nRuns = 0;
@@ -47,9 +51,10 @@ double timeSearch
         do
         {
             const auto t0 = std::chrono::steady_clock::now();
-            const spatialHash hash(x, 1.0);
+            hash.build(x);
             th += seconds(t0);
-            DynamicList<label> a, b;
+            a.clear();
+            b.clear();
             hash.pairs(body, a, b);
             nPairs = a.size();
             ++nRuns;
