@@ -3,11 +3,15 @@
 // search finds, on random clouds (with and without groups, tiny to huge
 // extents) and on two meshed bodies pressed into contact and moved;
 // lagrangianGraph keeps its mesh edges fixed while its world edges follow
-// the world positions; bad input stops with a message.
+// the world positions; the levels of a pooling built once take every
+// frame's world edges by setContact as a fresh build would; bad input
+// stops with a message.
 
 #include "spatialHash.H"
 #include "lagrangianGraph.H"
 #include "contactEdges.H"
+#include "bsmsPooling.H"
+#include "bsmsExport.H"
 #include "bsmsTestMeshes.H"
 
 #include <gtest/gtest.h>
@@ -172,6 +176,125 @@ TEST(worldEdges, twoBodiesInContact)
 
     // contactEdges (the static graphs of bsmsLevels) is the same search
     EXPECT_EQ(edgesOf(contactEdges(g, 0.08)), bruteForce(g.positions(), 0.08, L.body()));
+}
+
+
+// (4.1) by its definition: coarse nodes i', j' joined when a hop-contact-hop
+// chain (hops optional) links them: a in {i'} + N(i'), b in {j'} + N(j'),
+// (a, b) a contact edge of the fine level
+edgeSet contactByDefinition
+(
+    const meshGraph& g,
+    const meshGraph& contact,
+    const labelUList& pooled
+)
+{
+    labelList coarseOf(g.nNodes(), -1);
+    forAll(pooled, k) coarseOf[pooled[k]] = k;
+    auto images = [&](const label a)
+    {
+        std::vector<label> out;
+        if (coarseOf[a] >= 0) out.push_back(coarseOf[a]);
+        for (label k = g.offsets()[a]; k < g.offsets()[a + 1]; ++k)
+        {
+            const label c = coarseOf[g.neighbours()[k]];
+            if (c >= 0) out.push_back(c);
+        }
+        return out;
+    };
+    edgeSet s;
+    for (const auto& e : edgesOf(contact))
+    {
+        for (const label i : images(e.first))
+        {
+            for (const label j : images(e.second))
+            {
+                if (i != j) s.insert({min(i, j), max(i, j)});
+            }
+        }
+    }
+    return s;
+}
+
+
+// Moving bodies keep their levels (the pooling depends on the mesh edges
+// only) and rebuild the contact edges of every level per frame: after
+// setContact each level's contact edges are those of (4.1) from the
+// frame's world edges (by definition, level by level) and of a fresh build
+// with them, and the exported world holds every level's nodes at their
+// world positions
+TEST(worldEdges, contactLevelsPerFrame)
+{
+    meshBuilder m;
+    m.block(6, 5, 4, point::zero, 0.1, meshBuilder::TET, 0.2);
+    m.block(4, 4, 4, point(0.62, 0.05, 0.02), 0.1, meshBuilder::HEX);
+    const meshGraph g = m.graph(meshGraph::nodeType::points);
+    List<lagrangianGraph::nodeKind> kind(g.nNodes(), lagrangianGraph::nodeKind::free);
+    lagrangianGraph L(g, kind, 0.08);
+
+    bsmsPooling P("closeCenter", 10);
+    P.build(g);
+    ASSERT_GE(P.nLevels(), 3);
+    for (label l = 0; l < P.nLevels(); ++l)
+    {
+        EXPECT_EQ(P.contact(l).nEdges(), 0);
+    }
+    label contactsSeen = 0;
+    for (int config = 0; config < 2; ++config)
+    {
+        pointField x(L.X());
+        forAll(x, i)
+        {
+            if (L.body()[i] == 1) x[i] += vector(config ? -0.05 : -0.02, 0.01*config, 0);
+        }
+        L.move(x);
+        const meshGraph w = L.worldEdges();
+        P.setContact(w);
+        bsmsPooling fresh("closeCenter", 10);
+        fresh.build(g, w);
+        ASSERT_EQ(fresh.nLevels(), P.nLevels());
+        for (label l = 0; l < P.nLevels(); ++l)
+        {
+            EXPECT_EQ(edgesOf(P.contact(l)), edgesOf(fresh.contact(l)))
+                << "configuration " << config << " level " << l;
+            if (l > 0)
+            {
+                EXPECT_EQ
+                (
+                    edgesOf(P.contact(l)),
+                    contactByDefinition
+                    (
+                        P.graph(l - 1), P.contact(l - 1), P.pooled(l - 1)
+                    )
+                ) << "configuration " << config << " level " << l;
+            }
+            if (l + 1 < P.nLevels()) EXPECT_EQ(P.pooled(l), fresh.pooled(l));
+            contactsSeen += P.contact(l).nEdges();
+        }
+
+        const bsmsData::hierarchy h = bsmsExport(P, 3);
+        const bsmsData::world wd = bsmsExportWorld(P, x);
+        EXPECT_EQ(h.check(wd), "");
+        for (label l = 0; l < P.nLevels(); ++l)
+        {
+            const labelList finest(P.finestNodes(l));
+            forAll(finest, k)
+            {
+                for (direction d = 0; d < 3; ++d)
+                {
+                    EXPECT_EQ(wd.levels[l].positions[3*k + d], x[finest[k]][d]);
+                }
+            }
+            EXPECT_EQ(label(wd.levels[l].neighbours.size()), 2*P.contact(l).nEdges());
+        }
+    }
+    EXPECT_GT(contactsSeen, 40);
+
+    // A frame of other nodes is refused
+    FatalError.throwExceptions();
+    EXPECT_THROW(P.setContact(meshGraph(pointField(3), labelList(), labelList())), Foam::error);
+    EXPECT_THROW(bsmsExportWorld(P, pointField(3)), Foam::error);
+    FatalError.dontThrowExceptions();
 }
 
 

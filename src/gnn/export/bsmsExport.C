@@ -70,4 +70,38 @@ bsmsData::hierarchy Foam::bsmsExport(const bsmsPooling& levels, const int dim)
     return h;
 }
 
+bsmsData::world Foam::bsmsExportWorld
+(
+    const bsmsPooling& levels,
+    const pointField& x
+)
+{
+    if (levels.nLevels() == 0 || x.size() != levels.graph(0).nNodes())
+    {
+        FatalErrorInFunction
+            << x.size() << " world positions for "
+            << (levels.nLevels() ? levels.graph(0).nNodes() : label(0))
+            << " finest nodes" << exit(FatalError);
+    }
+    bsmsData::world w;
+    for (label l = 0; l < levels.nLevels(); ++l)
+    {
+        const meshGraph& c = levels.contact(l);
+        bsmsData::worldLevel out;
+        const labelList finest(levels.finestNodes(l));
+        out.positions.reserve(3*finest.size());
+        for (const label i : finest)
+        {
+            out.positions.push_back(x[i].x());
+            out.positions.push_back(x[i].y());
+            out.positions.push_back(x[i].z());
+        }
+        out.offsets.assign(c.offsets().begin(), c.offsets().end());
+        out.neighbours.assign(c.neighbours().begin(), c.neighbours().end());
+        w.levels.push_back(std::move(out));
+    }
+    return w;
+}
+
+
 // ************************************************************************* //

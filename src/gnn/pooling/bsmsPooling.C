@@ -351,26 +351,11 @@ Foam::meshGraph Foam::bsmsPooling::enhanceContact
 
 void Foam::bsmsPooling::build(const meshGraph& fine)
 {
-    build(fine, meshGraph(fine.positions(), labelList(), labelList()));
-}
-
-
-void Foam::bsmsPooling::build(const meshGraph& fine, const meshGraph& contact)
-{
-    if (contact.nNodes() != fine.nNodes())
-    {
-        FatalErrorInFunction
-            << "Contact graph of " << contact.nNodes() << " nodes for a "
-            << "graph of " << fine.nNodes() << exit(FatalError);
-    }
-    const bool withContact = contact.nEdges() > 0;
-
-    DynamicList<meshGraph*> graphs, contacts;
+    DynamicList<meshGraph*> graphs;
     DynamicList<labelList> pooled;
     DynamicList<scalar> seconds;
 
     graphs.append(new meshGraph(fine));
-    contacts.append(new meshGraph(contact));
     seconds.append(0);
 
     while
@@ -388,28 +373,53 @@ void Foam::bsmsPooling::build(const meshGraph& fine, const meshGraph& contact)
             break;
         }
         graphs.append(new meshGraph(enhance(g, I)));
-        contacts.append
-        (
-            withContact
-          ? new meshGraph(enhanceContact(g, *contacts.last(), I))
-          : new meshGraph
-            (
-                graphs.last()->positions(), labelList(), labelList()
-            )
-        );
         pooled.append(std::move(I));
         seconds.append(secondsSince(t0));
     }
 
     graphs_.setSize(graphs.size());
-    contacts_.setSize(contacts.size());
-    forAll(graphs, l)
-    {
-        graphs_.set(l, graphs[l]);
-        contacts_.set(l, contacts[l]);
-    }
+    forAll(graphs, l) graphs_.set(l, graphs[l]);
     pooled_.transfer(pooled);
     seconds_.transfer(seconds);
+    setContact(meshGraph(fine.positions(), labelList(), labelList()));
+}
+
+
+void Foam::bsmsPooling::build(const meshGraph& fine, const meshGraph& contact)
+{
+    if (contact.nNodes() != fine.nNodes())
+    {
+        FatalErrorInFunction
+            << "Contact graph of " << contact.nNodes() << " nodes for a "
+            << "graph of " << fine.nNodes() << exit(FatalError);
+    }
+    build(fine);
+    if (contact.nEdges() > 0) setContact(contact);
+}
+
+
+void Foam::bsmsPooling::setContact(const meshGraph& contact)
+{
+    if (graphs_.empty() || contact.nNodes() != graphs_[0].nNodes())
+    {
+        FatalErrorInFunction
+            << "Contact graph of " << contact.nNodes() << " nodes for "
+            << (graphs_.empty() ? label(0) : graphs_[0].nNodes())
+            << " finest nodes (levels built?)" << exit(FatalError);
+    }
+    const bool withContact = contact.nEdges() > 0;
+    contacts_.setSize(graphs_.size());
+    contacts_.set(0, new meshGraph(contact));
+    for (label l = 0; l + 1 < graphs_.size(); ++l)
+    {
+        contacts_.set
+        (
+            l + 1,
+            withContact
+          ? new meshGraph(enhanceContact(graphs_[l], contacts_[l], pooled_[l]))
+          : new meshGraph(graphs_[l + 1].positions(), labelList(), labelList())
+        );
+    }
 }
 
 
