@@ -34,6 +34,7 @@ graphNetConfig netOf(const trainerSettings& s)
     n.hidden = s.hidden;
     n.nMessagePasses = s.nMessagePasses;
     n.nLevels = s.nLevels;
+    n.world = s.world;
     return n;
 }
 
@@ -152,6 +153,15 @@ void setNumThreads(const int n)
 int numThreads()
 {
     return torch::get_num_threads();
+}
+
+
+void bsmsTrainerFacade::setWorlds
+(
+    const std::vector<const bsmsData::world*>& frames
+)
+{
+    impl_->trainer.net().setWorlds(frames);
 }
 
 

@@ -18,7 +18,13 @@ namespace gnnTorch
 std::vector<std::int64_t> graphNetConfig::codes() const
 {
     const std::int64_t t = (type == "bsms" ? 1 : type == "mgn" ? 2 : 0);
-    return {t, nIn, nOut, latent, hidden, nMessagePasses, nLevels};
+    std::vector<std::int64_t> c
+    {
+        t, nIn, nOut, latent, hidden, nMessagePasses, nLevels
+    };
+    // Only when set, so the checkpoints of mesh-only models read as before
+    if (world) c.push_back(world);
+    return c;
 }
 
 
@@ -29,6 +35,7 @@ std::string graphNetConfig::str() const
         << ", latent " << latent << ", hidden " << hidden;
     if (type == "mgn") os << ", nMessagePasses " << nMessagePasses;
     else os << ", nLevels " << nLevels;
+    if (world) os << ", world " << world;
     return os.str();
 }
 
@@ -98,7 +105,7 @@ graphTensors::graphTensors(const bsmsData::level& g, const int dim)
         meanLength += std::sqrt(len2);
     }
     if (E > 0) meanLength /= double(E);
-    const double h = meanLength > 0 ? meanLength : 1.0;
+    h = meanLength > 0 ? meanLength : 1.0;
     for (double& a : attr) a /= h;
     edgeAttr =
         torch::tensor(attr, torch::TensorOptions().dtype(torch::kFloat64))
@@ -111,6 +118,113 @@ torch::Tensor graphTensors::sumAtReceivers(const torch::Tensor& e) const
 {
     return torch::zeros({e.size(0), nNodes, e.size(2)}, e.options())
         .index_add_(1, receivers, e);
+}
+
+
+// * * * * * * * * * * * * * * * worldTensors  * * * * * * * * * * * * * * //
+
+worldTensors::worldTensors
+(
+    const graphTensors& g,
+    const std::vector<const bsmsData::world*>& frames,
+    const int l,
+    const int dim
+)
+:
+    nBatch(std::int64_t(frames.size()))
+{
+    const std::int64_t N = g.nNodes;
+    const std::int64_t E = g.receivers.numel();
+    const std::int64_t* recv = g.receivers.data_ptr<std::int64_t>();
+    const std::int64_t* send = g.senders.data_ptr<std::int64_t>();
+    const int nA = dim + 1;
+
+    // (x_i - x_j)/h and its length, for a frame's positions
+    auto offset = [&](const double* xi, const double* xj, double* out)
+    {
+        double len2 = 0;
+        for (int d = 0; d < dim; ++d)
+        {
+            const double dx = (xi[d] - xj[d])/g.h;
+            out[d] = dx;
+            len2 += dx*dx;
+        }
+        out[dim] = std::sqrt(len2);
+    };
+
+    std::vector<double> mesh(nBatch*E*nA);
+    std::vector<std::int64_t> wr, ws;
+    std::vector<double> wa;
+    for (std::int64_t b = 0; b < nBatch; ++b)
+    {
+        const bsmsData::world* w = frames[b];
+        if (!w || l >= std::int64_t(w->levels.size()))
+        {
+            throw std::runtime_error
+            (
+                "worldTensors: frame " + std::to_string(b) + " has no level "
+              + std::to_string(l)
+            );
+        }
+        const bsmsData::worldLevel& f = w->levels[l];
+        if
+        (
+            std::int64_t(f.positions.size()) != 3*N
+         || std::int64_t(f.offsets.size()) != N + 1
+        )
+        {
+            throw std::runtime_error
+            (
+                "worldTensors: frame " + std::to_string(b) + " level "
+              + std::to_string(l) + " has "
+              + std::to_string(f.positions.size()/3) + " nodes, the level "
+              + std::to_string(N)
+            );
+        }
+        const double* x = f.positions.data();
+        for (std::int64_t k = 0; k < E; ++k)
+        {
+            offset(x + 3*recv[k], x + 3*send[k], &mesh[(b*E + k)*nA]);
+        }
+        for (std::int64_t i = 0; i < N; ++i)
+        {
+            for (std::int64_t k = f.offsets[i]; k < f.offsets[i + 1]; ++k)
+            {
+                const std::int64_t j = f.neighbours[k];
+                if (j < 0 || j >= N)
+                {
+                    throw std::runtime_error
+                    (
+                        "worldTensors: world edge to node "
+                      + std::to_string(j) + " of " + std::to_string(N)
+                    );
+                }
+                wr.push_back(b*N + i);
+                ws.push_back(b*N + j);
+                wa.resize(wa.size() + nA);
+                offset(x + 3*i, x + 3*j, &wa[wa.size() - nA]);
+            }
+        }
+    }
+    const auto i64 = torch::TensorOptions().dtype(torch::kInt64);
+    const auto f64 = torch::TensorOptions().dtype(torch::kFloat64);
+    const std::int64_t C = std::int64_t(wr.size());
+    meshAttr = torch::tensor(mesh, f64).reshape({nBatch, E, nA}).to(torch::kFloat32);
+    receivers = torch::tensor(wr, i64);
+    senders = torch::tensor(ws, i64);
+    attr = torch::tensor(wa, f64).reshape({C, nA}).to(torch::kFloat32);
+}
+
+
+torch::Tensor worldTensors::sumAtReceivers
+(
+    const torch::Tensor& e,
+    const std::int64_t n
+) const
+{
+    return torch::zeros({nBatch*n, e.size(1)}, e.options())
+        .index_add_(0, receivers, e)
+        .reshape({nBatch, n, e.size(1)});
 }
 
 
@@ -182,6 +296,16 @@ torch::Tensor transitionTensors::upsample(const torch::Tensor& v) const
 
 // * * * * * * * * * * * * * * * graphNetwork * * * * * * * * * * * * * * * //
 
+void graphNetwork::setWorlds(const std::vector<const bsmsData::world*>&)
+{
+    throw std::runtime_error
+    (
+        "graph network: " + config().str() + " has no world edges (moving"
+        " bodies need a BSMS-GNN with world 1)"
+    );
+}
+
+
 std::int64_t graphNetwork::nParameters() const
 {
     std::int64_t n = 0;
@@ -215,6 +339,14 @@ std::shared_ptr<graphNetwork> newGraphNetwork
     }
     if (config.type == "mgn")
     {
+        if (config.world)
+        {
+            throw std::runtime_error
+            (
+                "graph network: moving bodies (world edges) need BSMS-GNN,"
+                " not mgn (" + config.str() + ")"
+            );
+        }
         return std::make_shared<mgnModel>(h, config);
     }
     throw std::runtime_error

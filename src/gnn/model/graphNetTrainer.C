@@ -68,6 +68,16 @@ graphNetTrainer::graphNetTrainer
             );
         }
     }
+    if (netConfig_.world && config_.rolloutSteps > 1)
+    {
+        throw std::runtime_error
+        (
+            "graphNetTrainer: a model of moving bodies (world edges) trains"
+            " on the one-step loss only (rolloutSteps "
+          + std::to_string(config_.rolloutSteps) + "): a rollout would need"
+            " the world edges of its own predicted frames"
+        );
+    }
     torch::manual_seed(config_.seed);
     net_ = newGraphNetwork(h, netConfig_);
     inNorm_ = normaliser(netConfig_.nIn, config_.normAccumulations);
