@@ -169,6 +169,7 @@ Usage
 #include "bsmsSurrogateModel.H"
 #include "bsmsTrajectory.H"
 #include "bsmsTrainingRun.H"
+#include "bsmsTrainLagrangian.H"
 #include "Pstream.H"
 
 #include <chrono>
@@ -580,6 +581,12 @@ int main(int argc, char *argv[])
     // Parallel: the master reads the dictionary and sends it on; the file
     // name in the other ranks' error messages
     static_cast<dictionary&>(dict).name() = dict.objectPath();
+
+    // Moving bodies: the Lagrangian path (bsmsTrainLagrangian.H)
+    if (dict.lookupOrDefault<word>("graph", "cells") == "lagrangian")
+    {
+        return bsmsTrainLagrangian(runTime, dict, args.found("fresh"));
+    }
 
     // Settings and data
     bsmsTrainSettings t(bsmsTrainSettings::read(dict, mesh, runTime, nRanks, rank));
