@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "bsmsTrainLagrangian.H"
+#include "bsmsTrainSettings.H"
 #include "lagrangianSamples.H"
 #include "bsmsExport.H"
 #include "bsmsTrainerFacade.H"
@@ -62,22 +63,12 @@ struct lagrangianSettings
         t.nOut = lagrangianSamples::nOut;
         t.latent = getLabelAtLeast(dict, "latent", 128, 1);
         t.hidden = getLabelAtLeast(dict, "hidden", 128, 1);
-        t.lr = getInRange(dict, "lr", 1e-4, 0, 1);
-        t.lrMin = getInRange(dict, "lrMin", 1e-6, 0, 1);
-        t.lrDecay = getInRange(dict, "lrDecay", 0.1, 0, 1);
-        t.decaySteps = getInRange(dict, "decaySteps", 5e6, 0, 1e300);
-        t.normAccumulations = getLabelAtLeast(dict, "normAccumulations", 1000, 1);
-        t.seed = getLabelAtLeast(dict, "seed", 0, 0);
+        // lr .. seed and noise (on the positions [m]) as the mesh graphs'
+        bsmsTrainSettings::readOptimiser(dict, t, s.noise);
         t.noiseStd = {0.0};
         s.steps = getLabelAtLeast(dict, "steps", 2000, 0);
         s.batch = getLabelAtLeast(dict, "batch", 1, 1);
         s.rolloutSteps = getLabelAtLeast(dict, "rolloutSteps", 1, 1);
-        const string allowedNoise("a number in [0, 1e30] [m]");
-        s.noise = getAsOrDefault<scalar>(dict, "noise", 0, allowedNoise);
-        if (!(s.noise >= 0 && s.noise <= 1e30))
-        {
-            badEntry(dict, "noise", Foam::name(s.noise), allowedNoise);
-        }
         s.maxTrainTime = getPositive(dict, "maxTrainTime", 1e30);
         s.printInterval =
             getLabelAtLeast(dict, "printInterval", max(s.steps/20, label(1)), 1);
@@ -217,8 +208,14 @@ int Foam::bsmsTrainLagrangian
     // Training
     const fileName outDir(runTime.path()/"postProcessing"/"bsmsTrain");
     mkDir(outDir);
-    OFstream lossFile(outDir/"loss.dat");
-    lossFile << "# step\tloss\tlr" << nl;
+    // A resumed run adds to the loss history of the run it resumes
+    const bool resumed = net.step() > 0 && isFile(outDir/"loss.dat");
+    OFstream lossFile
+    (
+        outDir/"loss.dat", IOstream::ASCII, IOstream::currentVersion,
+        IOstream::UNCOMPRESSED, resumed
+    );
+    if (!resumed) lossFile << "# step\tloss\tlr" << nl;
     std::vector<double> x, y;
     std::vector<bsmsData::world> worlds(s.batch);
     std::vector<const bsmsData::world*> ptrs(s.batch);
@@ -334,8 +331,31 @@ int Foam::bsmsTrainLagrangian
                 << e.model/max(e.velocity, VSMALL) << '\t' << e.secondsPerStep
                 << nl;
             OFstream rFile(outDir/("rollout_" + name + ".dat"));
-            rFile << "# step\tRMSE [m]" << nl;
-            forAll(e.perStep, k) rFile << k + 1 << '\t' << e.perStep[k] << nl;
+            rFile
+                << "# step\tRMSE model [m]\tholding the state [m]"
+                << "\tmoving on at the last velocity [m]" << nl;
+            for (std::size_t k = 0; k < e.perStep.size(); ++k)
+            {
+                rFile
+                    << k + 1 << '\t' << e.perStep[k] << '\t'
+                    << e.holdPerStep[k] << '\t' << e.velocityPerStep[k] << nl;
+            }
+
+            // The material points at the rollout's last frame, the model's
+            // and the recording's, for pictures side by side
+            const lagrangianRecording& rec = valid->recording(c);
+            const pointField& truth = rec.x(rec.nFrames() - 1);
+            OFstream fFile(outDir/("final_" + name + ".dat"));
+            fFile
+                << "# t = " << rec.times().last() << ": x y z of the rollout"
+                << " [m], x y z of the recording [m]" << nl;
+            for (label i = 0; i < rec.nPoints(); ++i)
+            {
+                fFile
+                    << xLast[i].x() << ' ' << xLast[i].y() << ' '
+                    << xLast[i].z() << ' ' << truth[i].x() << ' '
+                    << truth[i].y() << ' ' << truth[i].z() << nl;
+            }
         }
     }
 

@@ -117,27 +117,7 @@ bsmsModelSpec readModelSpec(const dictionary& dict, const polyMesh& mesh)
 void readTrainer(const dictionary& dict, bsmsTrainSettings& t)
 {
     gnnTorch::trainerSettings& s = t.trainer;
-    // Bounds that keep the single-precision network finite: Adam moves
-    // each weight by up to lr per step (lr > 1 throws any O(1) weight
-    // away), lrDecay > 1 grows lr without bound, noise beyond 1e30 leaves
-    // the float range
-    s.lr = getInRange(dict, "lr", 1e-4, 0, 1);
-    s.lrMin = getInRange(dict, "lrMin", 1e-6, 0, 1);
-    s.lrDecay = getInRange(dict, "lrDecay", 0.1, 0, 1);
-    s.decaySteps = getInRange(dict, "decaySteps", 5e6, 0, 1e300);
-    if (s.decaySteps < 1)
-    {
-        badEntry(dict, "decaySteps", name(s.decaySteps),
-            "a number of steps >= 1 and <= 1e300");
-    }
-    const string allowedNoise("a finite number >= 0 and <= 1e30");
-    t.noise = getAsOrDefault<scalar>(dict, "noise", 0, allowedNoise);
-    if (!(t.noise >= 0 && t.noise <= 1e30))
-    {
-        badEntry(dict, "noise", name(t.noise), allowedNoise);
-    }
-    s.normAccumulations = getLabelAtLeast(dict, "normAccumulations", 1000, 1);
-    s.seed = getLabelAtLeast(dict, "seed", 0, 0);
+    bsmsTrainSettings::readOptimiser(dict, s, t.noise);
 
     // Rollout training (graphNetTrainer): the loss over K model steps
     t.rolloutSteps = getLabelAtLeast(dict, "rolloutSteps", 1, 1);
@@ -209,6 +189,40 @@ void readBatch
 }
 
 } // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+void Foam::bsmsTrainSettings::readOptimiser
+(
+    const dictionary& dict,
+    gnnTorch::trainerSettings& s,
+    scalar& noise
+)
+{
+    using namespace dictionaryChecks;
+    // Bounds that keep the single-precision network finite: Adam moves
+    // each weight by up to lr per step (lr > 1 throws any O(1) weight
+    // away), lrDecay > 1 grows lr without bound, noise beyond 1e30 leaves
+    // the float range
+    s.lr = getInRange(dict, "lr", 1e-4, 0, 1);
+    s.lrMin = getInRange(dict, "lrMin", 1e-6, 0, 1);
+    s.lrDecay = getInRange(dict, "lrDecay", 0.1, 0, 1);
+    s.decaySteps = getInRange(dict, "decaySteps", 5e6, 0, 1e300);
+    if (s.decaySteps < 1)
+    {
+        badEntry(dict, "decaySteps", name(s.decaySteps),
+            "a number of steps >= 1 and <= 1e300");
+    }
+    const string allowedNoise("a finite number >= 0 and <= 1e30");
+    noise = getAsOrDefault<scalar>(dict, "noise", 0, allowedNoise);
+    if (!(noise >= 0 && noise <= 1e30))
+    {
+        badEntry(dict, "noise", name(noise), allowedNoise);
+    }
+    s.normAccumulations = getLabelAtLeast(dict, "normAccumulations", 1000, 1);
+    s.seed = getLabelAtLeast(dict, "seed", 0, 0);
+}
 
 
 // * * * * * * * * * * * * * * * * Constructor  * * * * * * * * * * * * * * //

@@ -351,6 +351,8 @@ Foam::lagrangianSamples::errors Foam::lagrangianSamples::rollout
         sumHold += sh;
         sumVel += sv;
         e.perStep.push_back(std::sqrt(sm/perFrame));
+        e.holdPerStep.push_back(std::sqrt(sh/perFrame));
+        e.velocityPerStep.push_back(std::sqrt(sv/perFrame));
         xPrev.transfer(x);
         x.transfer(xNext);
     }
