@@ -5,6 +5,7 @@
 
 #include "bsmsTrainLagrangian.H"
 #include "bsmsTrainSettings.H"
+#include "bsmsTrainingRun.H"
 #include "lagrangianSamples.H"
 #include "bsmsExport.H"
 #include "bsmsTrainerFacade.H"
@@ -116,14 +117,6 @@ void writeModelDict
         << "levels" << nl << s.levels << nl;
 }
 
-
-double secondsSince(const std::chrono::steady_clock::time_point& t0)
-{
-    return std::chrono::duration<double>
-    (
-        std::chrono::steady_clock::now() - t0
-    ).count();
-}
 
 } // End anonymous namespace
 

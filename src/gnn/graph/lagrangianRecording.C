@@ -200,8 +200,7 @@ Foam::lagrangianRecording::lagrangianRecording
     label nAct = 0;
     forAll(actuators, a)
     {
-        actNodes[a] = boxSurface(actuators[a].box(-GREAT), spacing);
-        actNodes[a] -= actuators[a].displacement(-GREAT);
+        actNodes[a] = boxSurface(actuators[a].box0(), spacing);
         nAct += actNodes[a].size();
     }
 

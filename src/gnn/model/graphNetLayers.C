@@ -155,6 +155,17 @@ worldTensors::worldTensors
     std::vector<double> mesh(nBatch*E*nA);
     std::vector<std::int64_t> wr, ws;
     std::vector<double> wa;
+    std::size_t nWorld = 0;
+    for (const bsmsData::world* w : frames)
+    {
+        if (w && l < std::int64_t(w->levels.size()))
+        {
+            nWorld += w->levels[l].neighbours.size();
+        }
+    }
+    wr.reserve(nWorld);
+    ws.reserve(nWorld);
+    wa.reserve(nWorld*nA);
     for (std::int64_t b = 0; b < nBatch; ++b)
     {
         const bsmsData::world* w = frames[b];

@@ -29,6 +29,22 @@ instantList writtenTimes(const Time& runTime)
     return instantList(std::move(out));
 }
 
+
+//- Whether two recordings have the same nodes: counts, the material
+//  points' X (to 1e-9 of the extent) and the kinds (an actuator's lattice
+//  may lie elsewhere: the same shape on a box at another place)
+bool sameNodes(const lagrangianRecording& a, const lagrangianRecording& b)
+{
+    if (a.nNodes() != b.nNodes() || a.nPoints() != b.nPoints()) return false;
+    const scalar tol = 1e-9*max(mag(max(a.X()) - min(a.X())), SMALL);
+    for (label i = 0; i < a.nNodes(); ++i)
+    {
+        const bool moved = i < a.nPoints() && mag(a.X()[i] - b.X()[i]) > tol;
+        if (moved || a.kind()[i] != b.kind()[i]) return false;
+    }
+    return true;
+}
+
 } // End anonymous namespace
 
 
@@ -174,15 +190,7 @@ Foam::lagrangianSamples::lagrangianSamples
 
         // The same nodes as the first case
         const lagrangianRecording& r0 = recordings_[0];
-        bool same = r.nNodes() == r0.nNodes() && r.nPoints() == r0.nPoints();
-        const scalar tol = 1e-9*max(mag(max(r0.X()) - min(r0.X())), SMALL);
-        // (the actuators' nodes may lie elsewhere: a lattice of the same
-        // shape on a box at another place)
-        for (label i = 0; same && i < r.nNodes(); ++i)
-        {
-            same = (i >= r.nPoints() || mag(r.X()[i] - r0.X()[i]) <= tol)
-                && r.kind()[i] == r0.kind()[i];
-        }
+        const bool same = ::sameNodes(r, r0);
         if (!same)
         {
             FatalIOErrorInFunction(dict)
@@ -225,19 +233,7 @@ Foam::lagrangianSamples::samples() const
 
 bool Foam::lagrangianSamples::sameNodes(const lagrangianSamples& other) const
 {
-    const lagrangianRecording& a = recordings_[0];
-    const lagrangianRecording& b = other.recordings_[0];
-    if (a.nNodes() != b.nNodes() || a.nPoints() != b.nPoints()) return false;
-    const scalar tol = 1e-9*max(mag(max(a.X()) - min(a.X())), SMALL);
-    for (label i = 0; i < a.nNodes(); ++i)
-    {
-        const bool moved = i < a.nPoints() && mag(a.X()[i] - b.X()[i]) > tol;
-        if (moved || a.kind()[i] != b.kind()[i])
-        {
-            return false;
-        }
-    }
-    return true;
+    return ::sameNodes(recordings_[0], other.recordings_[0]);
 }
 
 
