@@ -19,6 +19,20 @@ Foam::lagrangianGraph::nodeKindNames
 });
 
 
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::lagrangianGraph::checkedRadius(const scalar radius)
+{
+    if (!(radius > 0) || !std::isfinite(radius))
+    {
+        FatalErrorInFunction
+            << "World-edge radius " << radius << " is not a finite number > 0"
+            << exit(FatalError);
+    }
+    return radius;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::lagrangianGraph::lagrangianGraph
@@ -34,14 +48,9 @@ Foam::lagrangianGraph::lagrangianGraph
     kind_(kind),
     x_(reference.positions()),
     xPrev_(reference.positions()),
-    radius_(radius)
+    radius_(checkedRadius(radius)),
+    hash_(radius_)
 {
-    if (!(radius > 0) || !std::isfinite(radius))
-    {
-        FatalErrorInFunction
-            << "World-edge radius " << radius << " is not a finite number > 0"
-            << exit(FatalError);
-    }
     if (kind.size() != reference.nNodes())
     {
         FatalErrorInFunction
@@ -83,9 +92,12 @@ void Foam::lagrangianGraph::move(const pointField& x)
 
 Foam::meshGraph Foam::lagrangianGraph::worldEdges() const
 {
-    DynamicList<label> a, b;
-    spatialHash(x_, radius_).pairs(body_, a, b);
-    return meshGraph(x_, a, b);
+    // The hash and the pair lists keep their memory from step to step
+    hash_.build(x_);
+    a_.clear();
+    b_.clear();
+    hash_.pairs(body_, a_, b_);
+    return meshGraph(x_, a_, b_);
 }
 
 
