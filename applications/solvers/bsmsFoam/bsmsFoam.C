@@ -20,7 +20,9 @@ Description
 
     The log shows each model step's time and wall-clock cost, and at the
     end the mean cost per model step and per unit of simulated time (to
-    compare with the solver the model replaces).  A non-finite prediction
+    compare with the solver the model replaces).  A model of moving bodies
+    (graph lagrangian in its model dictionary) advances the case's MPM
+    cloud instead (bsmsFoamLagrangian.H).  A non-finite prediction
     writes the last good state and stops with a message (exit status 1);
     if the first step fails, the start time's files are left as they are.
 
@@ -71,6 +73,8 @@ Usage
 #include "bsmsFieldIO.H"
 #include "bsmsHybridSolver.H"
 #include "dictionaryChecks.H"
+#include "bsmsFoamLagrangian.H"
+#include "IFstream.H"
 
 #include <chrono>
 #include <cstdio>
@@ -122,6 +126,21 @@ int main(int argc, char *argv[])
     }
     modelFile.expand();
     if (!modelFile.isAbsolute()) modelFile = runTime.globalPath()/modelFile;
+
+    // A model of moving bodies (graph lagrangian): bsmsFoamLagrangian.H
+    {
+        const fileName specFile(bsmsSpecFile(modelFile));
+        if (isFile(specFile))
+        {
+            IFstream is(specFile);
+            dictionary spec(is);
+            spec.name() = specFile;
+            if (spec.lookupOrDefault<word>("graph", "cells") == "lagrangian")
+            {
+                return bsmsFoamLagrangian(runTime, mesh, modelFile, spec);
+            }
+        }
+    }
 
     std::unique_ptr<bsmsGatheredModel> model
     (

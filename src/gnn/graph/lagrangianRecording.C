@@ -14,6 +14,8 @@
 #include "SortableList.H"
 #include "SubField.H"
 
+#include <cmath>
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace
@@ -50,14 +52,19 @@ tmp<Field<T>> readCloudField
 }
 
 
-//- Points on the faces of box b: a lattice with at most spacing h between
-//  neighbours along each axis, the points with an index at either end
-pointField boxSurface(const Pair<vector>& b, const scalar h)
+//- Points on the faces of a box of size L with its lower corner at the
+//  origin: a lattice with at most spacing h between neighbours along each
+//  axis, the points with an index at either end.  L is rounded to 1e-12 m,
+//  so that boxes of one size at different places give the same lattice
+//  bit for bit (and so one pooling: closeCenter breaks the ties of a
+//  symmetric lattice by round-off)
+pointField boxSurface(const vector& size, const scalar h)
 {
-    const vector L = b.second() - b.first();
+    vector L;
     label n[3];
     for (direction a = 0; a < 3; ++a)
     {
+        L[a] = std::round(size[a]*1e12)/1e12;
         n[a] = max(label(2), label(std::ceil(L[a]/h - 1e-9)) + 1);
     }
     DynamicList<point> pts;
@@ -71,8 +78,7 @@ pointField boxSurface(const Pair<vector>& b, const scalar h)
         if (!face) continue;
         pts.append
         (
-            b.first()
-          + vector
+            vector
             (
                 L.x()*i/(n[0] - 1), L.y()*j/(n[1] - 1), L.z()*k/(n[2] - 1)
             )
@@ -123,10 +129,11 @@ Foam::lagrangianRecording::lagrangianRecording
         )
     );
     const labelList xyz({0, 1, 2});
-    const PtrList<mpmActuator> actuators
-    (
-        mpmActuator::readAll(mpmProperties, xyz)
-    );
+    {
+        PtrList<mpmActuator> read(mpmActuator::readAll(mpmProperties, xyz));
+        actuators_.transfer(read);
+    }
+    const PtrList<mpmActuator>& actuators = actuators_;
     scalar spacing = 0;
     if (actuators.size())
     {
@@ -194,13 +201,16 @@ Foam::lagrangianRecording::lagrangianRecording
         points[k] = pointField(x, sorted.indices());
     }
     nPoints_ = ids0.size();
+    ids_ = ids0;
 
-    // The actuators' nodes at zero displacement
-    List<pointField> actNodes(actuators.size());
+    // The actuators' nodes, relative to their boxes' lower corners
+    List<pointField>& actNodes = actuatorNodes_;
+    actNodes.setSize(actuators.size());
     label nAct = 0;
     forAll(actuators, a)
     {
-        actNodes[a] = boxSurface(actuators[a].box0(), spacing);
+        const Pair<vector>& b = actuators[a].box0();
+        actNodes[a] = boxSurface(b.second() - b.first(), spacing);
         nAct += actNodes[a].size();
     }
 
@@ -213,17 +223,14 @@ Foam::lagrangianRecording::lagrangianRecording
         pointField& xk = x_[k];
         xk.setSize(n);
         SubField<point>(xk, nPoints_) = points[k];
-        label o = nPoints_;
-        forAll(actuators, a)
-        {
-            const vector d = actuators[a].displacement(times_[k]);
-            for (const point& p : actNodes[a]) xk[o++] = p + d;
-        }
+        moveActuators(times_[k], xk);
     }
 
     X_ = x_[0];
     {
-        // The actuators' X: their boxes at zero displacement
+        // The actuators' X: the lattice relative to the box's lower
+        // corner, the same wherever the box is (one pooling for all cases;
+        // X enters only the mesh edges within a body)
         label o = nPoints_;
         forAll(actuators, a)
         {
@@ -262,7 +269,27 @@ Foam::lagrangianRecording::lagrangianRecording
 }
 
 
+Foam::lagrangianRecording::~lagrangianRecording()
+{}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+void Foam::lagrangianRecording::moveActuators
+(
+    const scalar t,
+    pointField& x
+) const
+{
+    label o = nPoints_;
+    forAll(actuators_, a)
+    {
+        const vector d =
+            actuators_[a].box0().first() + actuators_[a].displacement(t);
+        for (const point& p : actuatorNodes_[a]) x[o++] = d + p;
+    }
+}
+
 
 Foam::meshGraph Foam::lagrangianRecording::referenceGraph() const
 {

@@ -4,7 +4,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "lagrangianSamples.H"
-#include "bsmsExport.H"
 #include "Time.H"
 #include "dictionaryChecks.H"
 
@@ -30,97 +29,26 @@ instantList writtenTimes(const Time& runTime)
 }
 
 
-//- Whether two recordings have the same nodes: counts, the material
-//  points' X (to 1e-9 of the extent) and the kinds (an actuator's lattice
-//  may lie elsewhere: the same shape on a box at another place)
+//- Whether two recordings have the same nodes: counts, X (to 1e-9 of
+//  the extent; an actuator's X is relative to its box, so a box of the
+//  same size elsewhere has the same nodes) and the kinds: then they have
+//  one graph and one pooling, which the model's levels and the frames'
+//  world edges rely on
 bool sameNodes(const lagrangianRecording& a, const lagrangianRecording& b)
 {
     if (a.nNodes() != b.nNodes() || a.nPoints() != b.nPoints()) return false;
     const scalar tol = 1e-9*max(mag(max(a.X()) - min(a.X())), SMALL);
     for (label i = 0; i < a.nNodes(); ++i)
     {
-        const bool moved = i < a.nPoints() && mag(a.X()[i] - b.X()[i]) > tol;
-        if (moved || a.kind()[i] != b.kind()[i]) return false;
+        if (mag(a.X()[i] - b.X()[i]) > tol || a.kind()[i] != b.kind()[i])
+        {
+            return false;
+        }
     }
     return true;
 }
 
 } // End anonymous namespace
-
-
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-bsmsData::world Foam::lagrangianSamples::world(const pointField& x) const
-{
-    graph_->move(x);
-    pooling_.setContact(graph_->worldEdges());
-    return bsmsExportWorld(pooling_, x);
-}
-
-
-void Foam::lagrangianSamples::inputs
-(
-    const pointField& xPrev,
-    const pointField& x,
-    const pointField& xNext,
-    double* in
-) const
-{
-    const List<lagrangianGraph::nodeKind>& kind = recordings_[0].kind();
-    forAll(x, i)
-    {
-        double* p = in + nIn*i;
-        const vector v = x[i] - xPrev[i];
-        const label k = label(kind[i]);
-        const bool act = kind[i] == lagrangianGraph::nodeKind::actuator;
-        const vector a = act ? vector(xNext[i] - x[i]) : vector::zero;
-        for (direction d = 0; d < 3; ++d)
-        {
-            p[d] = v[d];
-            p[3 + d] = (d == k ? 1 : 0);
-            p[6 + d] = a[d];
-        }
-    }
-}
-
-
-bool Foam::lagrangianSamples::step
-(
-    const predictor& model,
-    const pointField& xPrev,
-    const pointField& x,
-    const pointField& xNext,
-    pointField& out,
-    label& bad
-) const
-{
-    const List<lagrangianGraph::nodeKind>& kind = recordings_[0].kind();
-    const label n = x.size();
-    std::vector<double> in(nIn*n);
-    inputs(xPrev, x, xNext, in.data());
-    const std::vector<double> dx = model(in, world(x));
-    out.setSize(n);
-    for (label i = 0; i < n; ++i)
-    {
-        if (kind[i] == lagrangianGraph::nodeKind::actuator)
-        {
-            // The prescribed path
-            out[i] = xNext[i];
-            continue;
-        }
-        for (direction d = 0; d < 3; ++d)
-        {
-            const double v = dx[nOut*i + d];
-            if (!std::isfinite(v))
-            {
-                bad = i;
-                return false;
-            }
-            out[i][d] = x[i][d] + v;
-        }
-    }
-    return true;
-}
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
@@ -133,7 +61,6 @@ Foam::lagrangianSamples::lagrangianSamples
     const dictionary& levels
 )
 :
-    pooling_(levels),
     deltaT_(0)
 {
     if (cases.empty())
@@ -199,18 +126,13 @@ Foam::lagrangianSamples::lagrangianSamples
                 << ": " << r.nPoints() << " material points and "
                 << r.nNodes() - r.nPoints() << " actuator nodes against "
                 << r0.nPoints() << " and " << r0.nNodes() - r0.nPoints()
-                << ", or material points at other places, or other kinds."
+                << ", or material points at other places, actuators of"
+                << " another size, or other kinds."
                 << " One model is one set of nodes" << exit(FatalIOError);
         }
     }
 
-    const lagrangianRecording& r0 = recordings_[0];
-    reference_ = r0.referenceGraph();
-    pooling_.build(reference_);
-    graph_.reset
-    (
-        new lagrangianGraph(reference_, r0.kind(), r0.worldRadius())
-    );
+    stepper_.reset(new lagrangianStepper(recordings_[0], levels));
 }
 
 
@@ -261,7 +183,7 @@ void Foam::lagrangianSamples::sample
         label bad = -1;
         for (label m = k - j; m < k; ++m)
         {
-            if (!step(*model, a, b, r.x(m + 1), next, bad)) break;
+            if (!stepper_->step(*model, a, b, r.x(m + 1), next, bad)) break;
             a.transfer(b);
             b.transfer(next);
         }
@@ -284,7 +206,7 @@ void Foam::lagrangianSamples::sample
     const std::size_t x0 = x.size(), y0 = y.size();
     x.resize(x0 + nIn*n);
     y.resize(y0 + nOut*n);
-    inputs(xkm1, xk, r.x(k + 1), &x[x0]);
+    stepper_->inputs(xkm1, xk, r.x(k + 1), &x[x0]);
     const pointField& xNext = r.x(k + 1);
     for (label i = 0; i < n; ++i)
     {
@@ -293,7 +215,7 @@ void Foam::lagrangianSamples::sample
             y[y0 + nOut*i + d] = xNext[i][d] - xk[i][d];
         }
     }
-    w = world(xk);
+    w = stepper_->world(xk);
 }
 
 
@@ -320,7 +242,7 @@ Foam::lagrangianSamples::errors Foam::lagrangianSamples::rollout
         const auto t0 = std::chrono::steady_clock::now();
         pointField xNext;
         label bad = -1;
-        const bool ok = step(model, xPrev, x, truth, xNext, bad);
+        const bool ok = stepper_->step(model, xPrev, x, truth, xNext, bad);
         seconds += std::chrono::duration<double>
         (
             std::chrono::steady_clock::now() - t0

@@ -1,0 +1,328 @@
+/*---------------------------------------------------------------------------*\
+  mpmFoam: material point, compressible-flow and graph-network methods
+           for OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "bsmsFoamLagrangian.H"
+#include "lagrangianStepper.H"
+#include "bsmsExport.H"
+#include "bsmsTrainerFacade.H"
+#include "dictionaryChecks.H"
+#include "passiveParticleCloud.H"
+#include "IOField.H"
+#include "Map.H"
+
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- The frames to read: the first written time (X), the one a model step
+//  before the start (if any) and the start; the index of the previous
+//  frame in them in prev (-1 if none)
+instantList rolloutFrames(const Time& runTime, const scalar deltaT, label& prev)
+{
+    const scalar t0 = runTime.value();
+    const scalar tol = 1e-6*deltaT;
+    DynamicList<instant> frames;
+    prev = -1;
+    const instant* first = nullptr;
+    const instant* before = nullptr;
+    for (const instant& t : runTime.times())
+    {
+        if (t.name() == "constant" || t.value() > t0 - tol) continue;
+        if (!first) first = &t;
+        if (mag(t.value() - (t0 - deltaT)) < tol) before = &t;
+    }
+    if (first && first != before) frames.append(*first);
+    if (before)
+    {
+        prev = frames.size();
+        frames.append(*before);
+    }
+    frames.append(instant(t0, runTime.timeName()));
+    return instantList(std::move(frames));
+}
+
+
+//- The cloud's field U at the current time, in the order of ids
+vectorField velocities
+(
+    const fvMesh& mesh,
+    const word& cloudName,
+    const labelList& ids
+)
+{
+    IOobject io
+    (
+        "U", mesh.time().timeName(), cloud::prefix/cloudName, mesh,
+        IOobject::MUST_READ, IOobject::NO_WRITE, false
+    );
+    IOobject idIO(io, "id");
+    if
+    (
+        !io.typeHeaderOk<IOField<vector>>(false)
+     || !idIO.typeHeaderOk<IOField<label>>(false)
+    )
+    {
+        FatalErrorInFunction
+            << "The case has no previous frame (t = "
+            << mesh.time().timeName() << " minus the model step) and no"
+            << " velocities of the cloud '" << cloudName << "' to start from:"
+            << " expected " << io.objectPath() << " and its id"
+            << exit(FatalError);
+    }
+    const IOField<vector> U(io);
+    const IOField<label> id(idIO);
+    Map<label> index(2*id.size());
+    forAll(id, i) index.insert(id[i], i);
+    vectorField out(ids.size());
+    forAll(ids, i) out[i] = U[index[ids[i]]];
+    return out;
+}
+
+
+//- Write the material points as the cloud at the current time
+void writeCloud
+(
+    const fvMesh& mesh,
+    const word& cloudName,
+    const lagrangianRecording& r,
+    const pointField& x,
+    const pointField& xPrev,
+    const scalar deltaT
+)
+{
+    const label nP = r.nPoints();
+    mesh.tetBasePtIs();
+    passiveParticleCloud cloud(mesh, cloudName, IDLList<passiveParticle>());
+    label nOutside = 0;
+    for (label i = 0; i < nP; ++i)
+    {
+        label celli = mesh.findCell(x[i]);
+        point p = x[i];
+        if (celli < 0)
+        {
+            ++nOutside;
+            celli = mesh.findNearestCell(x[i]);
+            p = mesh.cellCentres()[celli];
+        }
+        cloud.addParticle(new passiveParticle(mesh, p, celli));
+    }
+    cloud.write();
+    auto io = [&](const word& name)
+    {
+        return IOobject
+        (
+            name, mesh.time().timeName(), cloud::prefix/cloudName, mesh,
+            IOobject::NO_READ, IOobject::NO_WRITE, false
+        );
+    };
+    IOField<label>(io("id"), r.ids()).write();
+    const SubField<point> xP(x, nP);
+    IOField<vector>(io("x"), xP).write();
+    IOField<vector>
+    (
+        io("U"), (xP - SubField<point>(xPrev, nP))/deltaT
+    ).write();
+    IOField<vector>(io("d"), xP - SubField<point>(r.X(), nP)).write();
+    if (nOutside)
+    {
+        WarningInFunction
+            << nOutside << " of " << nP << " predicted points lie outside"
+            << " the mesh at t = " << mesh.time().timeName() << ": written"
+            << " in their nearest cells (field x holds the prediction)"
+            << endl;
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+int Foam::bsmsFoamLagrangian
+(
+    Time& runTime,
+    const fvMesh& mesh,
+    const fileName& modelFile,
+    const dictionary& spec
+)
+{
+    using namespace dictionaryChecks;
+    if (Pstream::parRun())
+    {
+        FatalIOErrorInFunction(spec)
+            << "The model " << modelFile << " (" << spec.name() << ": graph"
+            << " lagrangian) moves material points, which bsmsFoam advances"
+            << " serially for now: run it without -parallel"
+            << exit(FatalIOError);
+    }
+    const scalar deltaT = getPositive(spec, "deltaT");
+    const label nNodes = getLabelAtLeast(spec, "nNodes", 0, 1);
+    const label nPoints = getLabelAtLeast(spec, "nPoints", 0, 1);
+    const word cloudName
+    (
+        getAsOrDefault<word>(spec, "cloud", "mpmCloud", "a cloud name")
+    );
+    if (!spec.isDict("levels"))
+    {
+        missingEntry(spec, "levels", "the pooling's dictionary");
+    }
+
+    // The nodes: the case's cloud, its actuators
+    label prev = -1;
+    const instantList frames(rolloutFrames(runTime, deltaT, prev));
+    const lagrangianRecording r(runTime, frames, spec);
+    if (r.nNodes() != nNodes || r.nPoints() != nPoints)
+    {
+        FatalIOErrorInFunction(spec)
+            << "The model " << modelFile << " was trained on nNodes "
+            << nNodes << " (nPoints " << nPoints << " material points and "
+            << nNodes - nPoints << " actuator nodes; entries 'nNodes' and"
+            << " 'nPoints' in " << spec.name() << "), but the case has "
+            << r.nNodes() << " (" << r.nPoints() << " material points of"
+            << " the cloud '" << cloudName << "' at t = "
+            << runTime.timeName() << " and " << r.nNodes() - r.nPoints()
+            << " actuator nodes): a model is one set of nodes"
+            << exit(FatalIOError);
+    }
+    const lagrangianStepper stepper(r, spec.subDict("levels"));
+
+    // The network
+    gnnTorch::trainerSettings ts;
+    ts.model = "bsms";
+    ts.world = 1;
+    ts.nIn = lagrangianStepper::nIn;
+    ts.nOut = lagrangianStepper::nOut;
+    ts.latent = getLabelAtLeast(spec, "latent", 128, 1);
+    ts.hidden = getLabelAtLeast(spec, "hidden", 128, 1);
+    ts.noiseStd = {0.0};
+    gnnTorch::bsmsTrainerFacade net(bsmsExport(stepper.pooling(), 3), ts);
+    try
+    {
+        net.load(modelFile);
+    }
+    catch (const std::exception& e)
+    {
+        FatalIOErrorInFunction(spec)
+            << "The checkpoint " << modelFile << " is not the model that "
+            << spec.name() << " describes on this case's graph: "
+            << e.what() << exit(FatalIOError);
+    }
+    const lagrangianStepper::predictor model =
+        [&](const std::vector<double>& in, const bsmsData::world& w)
+        {
+            net.setWorlds({&w});
+            return net.predict(in);
+        };
+    Info<< "Model " << modelFile << ": BSMS-GNN of moving bodies, "
+        << r.nPoints() << " material points and " << r.nNodes() - r.nPoints()
+        << " actuator nodes, levels of " << stepper.pooling().nLevels()
+        << ", deltaT " << deltaT << nl;
+
+    // The start: x_k and x_{k-1}
+    const label nP = r.nPoints();
+    pointField x(r.x(r.nFrames() - 1));
+    pointField xPrev;
+    if (prev >= 0)
+    {
+        xPrev = r.x(prev);
+        Info<< "Start from t = " << runTime.timeName() << " and the frame"
+            << " of t = " << r.times()[prev] << nl << endl;
+    }
+    else
+    {
+        const vectorField U(velocities(mesh, cloudName, r.ids()));
+        xPrev = x;
+        for (label i = 0; i < nP; ++i) xPrev[i] -= U[i]*deltaT;
+        r.moveActuators(runTime.value() - deltaT, xPrev);
+        Info<< "Start from t = " << runTime.timeName() << " with the"
+            << " cloud's velocities (no frame one model step before)"
+            << nl << endl;
+    }
+
+    // The rollout.  The case's function objects are the MPM solver's
+    // monitors (mpmConservation, ...), which need its state: off
+    if (runTime.functionObjects().size() || runTime.controlDict().found("functions"))
+    {
+        Info<< "The case's function objects are off (they monitor the MPM"
+            << " solver's state, which a rollout does not have)" << nl << endl;
+    }
+    runTime.functionObjects().off();
+    runTime.setDeltaT(deltaT);
+    const auto t0 = std::chrono::steady_clock::now();
+    label nSteps = 0;
+    double modelSeconds = 0;
+    bool written = true;
+    char buf[200];
+    while (runTime.run())
+    {
+        pointField xNext(x);
+        r.moveActuators(runTime.value() + deltaT, xNext);
+        pointField out;
+        label bad = -1;
+        const auto ts0 = std::chrono::steady_clock::now();
+        const bool ok = stepper.step(model, xPrev, x, xNext, out, bad);
+        const double sec = std::chrono::duration<double>
+        (
+            std::chrono::steady_clock::now() - ts0
+        ).count();
+        modelSeconds += sec;
+        if (!ok)
+        {
+            if (!written)
+            {
+                writeCloud(mesh, cloudName, r, x, xPrev, deltaT);
+            }
+            FatalErrorInFunction
+                << "The model predicted a non-finite displacement of node "
+                << bad << " at t = " << runTime.value() + deltaT
+                << " (model step " << nSteps + 1 << "); the last good state"
+                << (nSteps ? " is written at t = " : " is the start time t = ")
+                << runTime.timeName()
+                << (nSteps ? "" : ", whose files are left as they are")
+                << exit(FatalError);
+        }
+        ++runTime;
+        ++nSteps;
+        xPrev.transfer(x);
+        x.transfer(out);
+        std::snprintf(buf, sizeof(buf), "model step %.1f ms", 1e3*sec);
+        Info<< "Time = " << runTime.timeName() << "  " << buf << nl;
+        written = runTime.writeTime();
+        if (written)
+        {
+            writeCloud(mesh, cloudName, r, x, xPrev, deltaT);
+            runTime.writeNow();
+        }
+    }
+
+    const double wall = std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - t0
+    ).count();
+    std::snprintf
+    (
+        buf, sizeof(buf),
+        "%d model steps in %.3f s (%.2f ms per step, model only %.2f ms);"
+        " %.4f s per unit of simulated time",
+        int(nSteps), wall, 1e3*wall/max(nSteps, label(1)),
+        1e3*modelSeconds/max(nSteps, label(1)),
+        wall/max(nSteps*deltaT, SMALL)
+    );
+    Info<< nl << buf << nl
+        << "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
+        << "  ClockTime = " << runTime.elapsedClockTime() << " s"
+        << nl << nl << "End" << nl << endl;
+    return 0;
+}
+
+
+// ************************************************************************* //
