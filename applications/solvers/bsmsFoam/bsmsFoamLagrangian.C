@@ -196,15 +196,15 @@ int Foam::bsmsFoamLagrangian
     const lagrangianStepper stepper(r, spec.subDict("levels"));
 
     // The network
-    gnnTorch::trainerSettings ts;
-    ts.model = "bsms";
-    ts.world = 1;
-    ts.nIn = lagrangianStepper::nIn;
-    ts.nOut = lagrangianStepper::nOut;
-    ts.latent = getLabelAtLeast(spec, "latent", 128, 1);
-    ts.hidden = getLabelAtLeast(spec, "hidden", 128, 1);
-    ts.noiseStd = {0.0};
-    gnnTorch::bsmsTrainerFacade net(bsmsExport(stepper.pooling(), 3), ts);
+    gnnTorch::bsmsTrainerFacade net
+    (
+        bsmsExport(stepper.pooling(), 3),
+        lagrangianStepper::network
+        (
+            getLabelAtLeast(spec, "latent", 128, 1),
+            getLabelAtLeast(spec, "hidden", 128, 1)
+        )
+    );
     try
     {
         net.load(modelFile);

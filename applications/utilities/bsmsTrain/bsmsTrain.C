@@ -474,36 +474,6 @@ void reportFinalLoss(bsmsSurrogateModel& m, const bsmsTrainingData& d)
 }
 
 
-//- The ranks hold the same model (the same gradients and Adam steps)
-void checkRanksAgree(bsmsSurrogateModel& m)
-{
-    if (!Pstream::parRun()) return;
-    const label nRanks = Pstream::nProcs();
-    char buf[40];
-    std::snprintf
-    (
-        buf, sizeof(buf), "%016llx",
-        static_cast<unsigned long long>(m.net().parameterHash())
-    );
-    List<word> hashes(nRanks);
-    hashes[Pstream::myProcNo()] = buf;
-    Pstream::gatherList(hashes);
-    if (!Pstream::master()) return;
-    label nSame = 0;
-    for (const word& h : hashes) nSame += (h == hashes[0]);
-    if (nSame != nRanks)
-    {
-        FatalErrorInFunction
-            << "The ranks' parameters differ after training (hashes "
-            << hashes << "): the data-parallel steps went out of"
-            << " step; the checkpoint is the master's"
-            << exit(FatalError);
-    }
-    Info<< "Parameters identical on all " << nRanks << " ranks"
-        << " (hash " << hashes[0] << ")" << nl;
-}
-
-
 //- The training range recorded in the model dictionary
 void reportTrainingRange
 (
@@ -643,7 +613,7 @@ int main(int argc, char *argv[])
     }
 
     reportFinalLoss(m, d);
-    checkRanksAgree(m);
+    checkRanksAgree(m.net().parameterHash());
     reportTrainingRange(t, m);
 
     Info<< nl << "End" << nl << endl;

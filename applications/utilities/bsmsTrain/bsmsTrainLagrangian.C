@@ -9,12 +9,14 @@
 #include "lagrangianSamples.H"
 #include "bsmsExport.H"
 #include "bsmsTrainerFacade.H"
+#include "bsmsPstreamSum.H"
 #include "dictionaryChecks.H"
 #include "OFstream.H"
 #include "OSspecific.H"
 
 #include <chrono>
 #include <cstdio>
+#include <random>
 #include <stdexcept>
 
 using namespace Foam;
@@ -24,24 +26,28 @@ using namespace Foam;
 namespace
 {
 
-//- The settings of a Lagrangian training
+//- The settings of a Lagrangian training: the batch, run and optimiser
+//  entries as the mesh graphs' (bsmsTrainSettings), and its own
 struct lagrangianSettings
 {
+    //- steps, batch, gradientShards and this rank's share, maxTrainTime,
+    //  printInterval, checkpoint; the trainer (optimiser, sizes) and noise
+    //  (on the positions [m])
+    bsmsTrainSettings common;
     fileNameList cases;
     fileNameList validationCases;
     dictionary levels;
-    gnnTorch::trainerSettings trainer;
-    label steps = 2000;
-    label batch = 1;
     //- Most model steps a sample's input is rolled out by the model
     //  (1: the recorded frames only)
     label rolloutSteps = 1;
-    scalar noise = 0;
-    scalar maxTrainTime = 1e30;
-    label printInterval = 100;
-    fileName checkpoint;
 
-    static lagrangianSettings read(const dictionary& dict, const Time& runTime)
+    static lagrangianSettings read
+    (
+        const dictionary& dict,
+        const Time& runTime,
+        const label nRanks,
+        const label rank
+    )
     {
         using namespace dictionaryChecks;
         lagrangianSettings s;
@@ -57,28 +63,16 @@ struct lagrangianSettings
         {
             s.levels = *ld;
         }
-        gnnTorch::trainerSettings& t = s.trainer;
-        t.model = "bsms";
-        t.world = 1;
-        t.nIn = lagrangianSamples::nIn;
-        t.nOut = lagrangianSamples::nOut;
-        t.latent = getLabelAtLeast(dict, "latent", 128, 1);
-        t.hidden = getLabelAtLeast(dict, "hidden", 128, 1);
-        // lr .. seed and noise (on the positions [m]) as the mesh graphs'
-        bsmsTrainSettings::readOptimiser(dict, t, s.noise);
-        t.noiseStd = {0.0};
-        s.steps = getLabelAtLeast(dict, "steps", 2000, 0);
-        s.batch = getLabelAtLeast(dict, "batch", 1, 1);
-        s.rolloutSteps = getLabelAtLeast(dict, "rolloutSteps", 1, 1);
-        s.maxTrainTime = getPositive(dict, "maxTrainTime", 1e30);
-        s.printInterval =
-            getLabelAtLeast(dict, "printInterval", max(s.steps/20, label(1)), 1);
-        s.checkpoint = getAsOrDefault<fileName>
+        gnnTorch::trainerSettings& t = s.common.trainer;
+        t = lagrangianStepper::network
         (
-            dict, "checkpoint", "constant/bsmsModel.pt", "a file name"
+            getLabelAtLeast(dict, "latent", 128, 1),
+            getLabelAtLeast(dict, "hidden", 128, 1)
         );
-        s.checkpoint.expand();
-        if (!s.checkpoint.isAbsolute()) s.checkpoint = runTime.path()/s.checkpoint;
+        bsmsTrainSettings::readOptimiser(dict, t, s.common.noise);
+        bsmsTrainSettings::readBatch(dict, nRanks, rank, s.common);
+        bsmsTrainSettings::readRun(dict, runTime, s.common);
+        s.rolloutSteps = getLabelAtLeast(dict, "rolloutSteps", 1, 1);
         return s;
     }
 };
@@ -111,8 +105,8 @@ void writeModelDict
     }
     os  << "nNodes          " << r.nNodes() << ';' << nl
         << "nPoints         " << r.nPoints() << ';' << nl
-        << "latent          " << s.trainer.latent << ';' << nl
-        << "hidden          " << s.trainer.hidden << ';' << nl
+        << "latent          " << s.common.trainer.latent << ';' << nl
+        << "hidden          " << s.common.trainer.hidden << ';' << nl
         << "deltaT          " << data.deltaT() << ';' << nl
         << "levels" << nl << s.levels << nl;
 }
@@ -130,13 +124,14 @@ int Foam::bsmsTrainLagrangian
     const bool fresh
 )
 {
-    if (Pstream::parRun())
-    {
-        FatalIOErrorInFunction(dict)
-            << "graph lagrangian (" << dict.name() << ") trains serially for"
-            << " now; run bsmsTrain without -parallel" << exit(FatalIOError);
-    }
-    const lagrangianSettings s(lagrangianSettings::read(dict, runTime));
+    const bool parallel = Pstream::parRun();
+    const label nRanks = parallel ? Pstream::nProcs() : 1;
+    const label rank = parallel ? Pstream::myProcNo() : 0;
+    const lagrangianSettings s
+    (
+        lagrangianSettings::read(dict, runTime, nRanks, rank)
+    );
+    const bsmsTrainSettings& c = s.common;
 
     // Data: the recordings, one graph for all
     const auto t0 = std::chrono::steady_clock::now();
@@ -175,43 +170,67 @@ int Foam::bsmsTrainLagrangian
 
     // The model, resumed from its checkpoint unless fresh
     const bsmsData::hierarchy h = bsmsExport(data.pooling(), 3);
-    gnnTorch::bsmsTrainerFacade net(h, s.trainer);
+    gnnTorch::bsmsTrainerFacade net(h, c.trainer);
     Info<< "Model " << net.describe().c_str() << ", "
         << label(net.nParameters()) << " parameters" << nl;
-    if (!fresh && isFile(s.checkpoint))
+    if (!fresh && isFile(c.checkpoint))
     {
         try
         {
-            net.load(s.checkpoint);
+            net.load(c.checkpoint);
         }
         catch (const std::exception& e)
         {
             FatalIOErrorInFunction(dict)
-                << "The checkpoint " << s.checkpoint << " (entry"
+                << "The checkpoint " << c.checkpoint << " (entry"
                 << " 'checkpoint' in " << dict.name() << ") is not a model"
                 << " of these recordings (another mesh, node count or"
                 << " size?): " << e.what() << nl
                 << "    Remove it or run with -fresh" << exit(FatalIOError);
         }
-        Info<< "Resumed from " << s.checkpoint << " at step " << label(net.step())
+        Info<< "Resumed from " << c.checkpoint << " at step " << label(net.step())
             << nl;
     }
     Info<< endl;
+    if (parallel)
+    {
+        gnnTorch::setNumThreads(1);
+        Info<< "Parallel run: " << nRanks << " ranks, synchronous data"
+            << " parallel: every rank reads the recordings and trains on its"
+            << " shards of every step's batch (this rank " << c.nMineShards
+            << " of " << c.nShards << " shards, " << c.nMine << " samples),"
+            << " the shards' gradients summed over the ranks each step; "
+            << gnnTorch::numThreads() << " torch thread per rank" << nl
+            << endl;
+    }
+    Info<< "Batch of " << c.batch << " in " << c.nShards << " gradient shards"
+        << " (the same training on any number of ranks up to " << c.nShards
+        << ")" << nl << endl;
 
-    // Training
+    // Training (the master writes the loss history)
+    const bool master = Pstream::master();
     const fileName outDir(runTime.path()/"postProcessing"/"bsmsTrain");
-    mkDir(outDir);
-    // A resumed run adds to the loss history of the run it resumes
-    const bool resumed = net.step() > 0 && isFile(outDir/"loss.dat");
-    OFstream lossFile
-    (
-        outDir/"loss.dat", IOstream::ASCII, IOstream::currentVersion,
-        IOstream::UNCOMPRESSED, resumed
-    );
-    if (!resumed) lossFile << "# step\tloss\tlr" << nl;
+    autoPtr<OFstream> lossFile;
+    if (master)
+    {
+        mkDir(outDir);
+        // A resumed run adds to the loss history of the run it resumes
+        const bool resumed = net.step() > 0 && isFile(outDir/"loss.dat");
+        lossFile.reset
+        (
+            new OFstream
+            (
+                outDir/"loss.dat", IOstream::ASCII, IOstream::currentVersion,
+                IOstream::UNCOMPRESSED, resumed
+            )
+        );
+        if (!resumed) lossFile() << "# step\tloss\tlr" << nl;
+    }
     std::vector<double> x, y;
-    std::vector<bsmsData::world> worlds(s.batch);
-    std::vector<const bsmsData::world*> ptrs(s.batch);
+    std::vector<bsmsData::world> worlds(c.nMine);
+    std::vector<const bsmsData::world*> ptrs(c.nMine);
+    for (label b = 0; b < c.nMine; ++b) ptrs[b] = &worlds[b];
+    bsmsPstreamSum rankSum;
     // The model as a predictor (a rollout's steps, rolled inputs)
     const lagrangianSamples::predictor model =
         [&](const std::vector<double>& in, const bsmsData::world& w)
@@ -221,53 +240,69 @@ int Foam::bsmsTrainLagrangian
         };
     if (s.rolloutSteps > 1)
     {
-        Info<< "Rolled inputs: after the normalisers' " << label(s.trainer.normAccumulations)
-            << " steps, each sample's input is the model's own, rolled out"
-            << " 0 to " << s.rolloutSteps - 1 << " model steps from the"
-            << " recorded frames (target: the recorded next frame)" << nl
-            << endl;
+        Info<< "Rolled inputs: after the normalisers' "
+            << label(c.trainer.normAccumulations) << " steps, each sample's"
+            << " input is the model's own, rolled out 0 to "
+            << s.rolloutSteps - 1 << " model steps from the recorded frames"
+            << " (target: the recorded next frame)" << nl << endl;
     }
     const auto tTrain = std::chrono::steady_clock::now();
     label step = label(net.step());
     const label start = step;
     double lossSum = 0;
     label lossN = 0;
-    while (step < s.steps && secondsSince(tTrain) < s.maxTrainTime)
+    std::vector<std::pair<std::size_t, label>> draws(c.batch);
+    while (step < c.nSteps && secondsSince(tTrain) < c.maxTrainTime)
     {
-        // The step's draws from a generator seeded by (seed, step): a
-        // resumed run draws what an uninterrupted one would
-        std::mt19937_64 gen(s.trainer.seed*1000003ull + std::uint64_t(step));
+        // The step's draws (sample, rolled steps) from a generator seeded
+        // by (seed, step), every sample's noise from one seeded by (seed,
+        // step, sample): a resumed run draws what an uninterrupted one
+        // would, and every rank what it needs of the same batch
+        const std::uint64_t seed = c.trainer.seed*1000003ull + std::uint64_t(step);
+        std::mt19937_64 gen(seed);
         std::uniform_int_distribution<std::size_t> pick(0, samples.size() - 1);
         const bool rolled =
-            s.rolloutSteps > 1 && step >= s.trainer.normAccumulations;
-        x.clear();
-        y.clear();
-        for (label b = 0; b < s.batch; ++b)
+            s.rolloutSteps > 1 && step >= c.trainer.normAccumulations;
+        for (label b = 0; b < c.batch; ++b)
         {
-            const auto& sk = samples[pick(gen)];
+            const std::size_t i = pick(gen);
             label j = 0;
             if (rolled)
             {
                 std::uniform_int_distribution<label> roll
                 (
-                    0, min(s.rolloutSteps - 1, sk.second - 1)
+                    0, min(s.rolloutSteps - 1, samples[i].second - 1)
                 );
                 j = roll(gen);
             }
+            draws[b] = {i, j};
+        }
+        x.clear();
+        y.clear();
+        for (label m = 0; m < c.nMine; ++m)
+        {
+            const label b = c.shareFirst + m;
+            const auto& sk = samples[draws[b].first];
+            std::mt19937_64 noiseGen(seed*0x9E3779B97F4A7C15ull + std::uint64_t(b));
             data.sample
             (
-                sk.first, sk.second, s.noise, gen, x, y, worlds[b],
-                rolled ? &model : nullptr, j
+                sk.first, sk.second, c.noise, noiseGen, x, y, worlds[m],
+                rolled ? &model : nullptr, draws[b].second
             );
-            ptrs[b] = &worlds[b];
         }
-        net.setWorlds(ptrs);
-        const double loss = net.trainStep(x, y);
+        const double loss = net.trainShards
+        (
+            x, y, c.shardFirst, c.nMineShards, c.nShards, c.batch, rankSum,
+            ptrs
+        );
         ++step;
-        lossFile << step << '\t' << loss << '\t' << net.learningRate() << nl;
+        if (master)
+        {
+            lossFile() << step << '\t' << loss << '\t' << net.learningRate() << nl;
+        }
         lossSum += loss;
         ++lossN;
-        if (step % s.printInterval == 0 || step == s.steps)
+        if (step % c.printInterval == 0 || step == c.nSteps)
         {
             const double el = secondsSince(tTrain);
             char buf[160];
@@ -275,7 +310,7 @@ int Foam::bsmsTrainLagrangian
             (
                 buf, sizeof(buf),
                 "step %d/%d  loss %.3e  lr %.2e  %.3f s per step",
-                int(step), int(s.steps), lossSum/lossN, net.learningRate(),
+                int(step), int(c.nSteps), lossSum/lossN, net.learningRate(),
                 el/max(step - start, label(1))
             );
             Info<< buf << endl;
@@ -289,17 +324,26 @@ int Foam::bsmsTrainLagrangian
         Info<< nl << "Trained " << step - start << " steps in "
             << trainSeconds << " s (" << trainSeconds/(step - start)
             << " s per step)" << nl;
-        mkDir(s.checkpoint.path());
-        net.save(s.checkpoint);
-        writeModelDict
-        (
-            s.checkpoint.path()/"bsmsModelDict", s, data, dict
-        );
-        Info<< "Wrote " << s.checkpoint << " and its bsmsModelDict" << nl;
+        if (parallel)
+        {
+            Info<< "Communication: " << rankSum.nCalls() << " gradient sums,"
+                << " " << rankSum.seconds() << " s on the master" << nl;
+        }
+        if (master)
+        {
+            mkDir(c.checkpoint.path());
+            net.save(c.checkpoint);
+            writeModelDict
+            (
+                c.checkpoint.path()/"bsmsModelDict", s, data, dict
+            );
+        }
+        Info<< "Wrote " << c.checkpoint << " and its bsmsModelDict" << nl;
     }
+    checkRanksAgree(net.parameterHash());
 
-    // Validation rollouts against the trivial baselines
-    if (valid.valid())
+    // Validation rollouts against the trivial baselines (the master)
+    if (valid.valid() && master)
     {
         OFstream vFile(outDir/"validation.dat");
         vFile

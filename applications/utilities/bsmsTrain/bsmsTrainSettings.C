@@ -145,8 +145,44 @@ void readTrainer(const dictionary& dict, bsmsTrainSettings& t)
 }
 
 
-//- The batch, its gradient shards and this rank's share of them
-void readBatch
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+void Foam::bsmsTrainSettings::readOptimiser
+(
+    const dictionary& dict,
+    gnnTorch::trainerSettings& s,
+    scalar& noise
+)
+{
+    using namespace dictionaryChecks;
+    // Bounds that keep the single-precision network finite: Adam moves
+    // each weight by up to lr per step (lr > 1 throws any O(1) weight
+    // away), lrDecay > 1 grows lr without bound, noise beyond 1e30 leaves
+    // the float range
+    s.lr = getInRange(dict, "lr", 1e-4, 0, 1);
+    s.lrMin = getInRange(dict, "lrMin", 1e-6, 0, 1);
+    s.lrDecay = getInRange(dict, "lrDecay", 0.1, 0, 1);
+    s.decaySteps = getInRange(dict, "decaySteps", 5e6, 0, 1e300);
+    if (s.decaySteps < 1)
+    {
+        badEntry(dict, "decaySteps", name(s.decaySteps),
+            "a number of steps >= 1 and <= 1e300");
+    }
+    const string allowedNoise("a finite number >= 0 and <= 1e30");
+    noise = getAsOrDefault<scalar>(dict, "noise", 0, allowedNoise);
+    if (!(noise >= 0 && noise <= 1e30))
+    {
+        badEntry(dict, "noise", name(noise), allowedNoise);
+    }
+    s.normAccumulations = getLabelAtLeast(dict, "normAccumulations", 1000, 1);
+    s.seed = getLabelAtLeast(dict, "seed", 0, 0);
+}
+
+
+void Foam::bsmsTrainSettings::readBatch
 (
     const dictionary& dict,
     const label nRanks,
@@ -188,40 +224,28 @@ void readBatch
     t.nMine = (t.shardFirst + t.nMineShards)*t.batch/t.nShards - t.shareFirst;
 }
 
-} // End anonymous namespace
-
-
-// * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
-
-void Foam::bsmsTrainSettings::readOptimiser
+void Foam::bsmsTrainSettings::readRun
 (
     const dictionary& dict,
-    gnnTorch::trainerSettings& s,
-    scalar& noise
+    const Time& runTime,
+    bsmsTrainSettings& t
 )
 {
     using namespace dictionaryChecks;
-    // Bounds that keep the single-precision network finite: Adam moves
-    // each weight by up to lr per step (lr > 1 throws any O(1) weight
-    // away), lrDecay > 1 grows lr without bound, noise beyond 1e30 leaves
-    // the float range
-    s.lr = getInRange(dict, "lr", 1e-4, 0, 1);
-    s.lrMin = getInRange(dict, "lrMin", 1e-6, 0, 1);
-    s.lrDecay = getInRange(dict, "lrDecay", 0.1, 0, 1);
-    s.decaySteps = getInRange(dict, "decaySteps", 5e6, 0, 1e300);
-    if (s.decaySteps < 1)
+    t.maxTrainTime = getPositive(dict, "maxTrainTime", 1e30);
+    t.checkpointInterval =
+        getLabelAtLeast(dict, "checkpointInterval", t.nSteps, 1);
+    t.printInterval =
+        getLabelAtLeast(dict, "printInterval", max(t.nSteps/20, 1), 1);
+    t.checkpoint = getAsOrDefault<fileName>
+    (
+        dict, "checkpoint", fileName("constant/bsmsModel.pt"), "a file name"
+    );
+    t.checkpoint.expand();
+    if (!t.checkpoint.isAbsolute())
     {
-        badEntry(dict, "decaySteps", name(s.decaySteps),
-            "a number of steps >= 1 and <= 1e300");
+        t.checkpoint = runTime.path()/t.checkpoint;
     }
-    const string allowedNoise("a finite number >= 0 and <= 1e30");
-    noise = getAsOrDefault<scalar>(dict, "noise", 0, allowedNoise);
-    if (!(noise >= 0 && noise <= 1e30))
-    {
-        badEntry(dict, "noise", name(noise), allowedNoise);
-    }
-    s.normAccumulations = getLabelAtLeast(dict, "normAccumulations", 1000, 1);
-    s.seed = getLabelAtLeast(dict, "seed", 0, 0);
 }
 
 
@@ -240,21 +264,7 @@ Foam::bsmsTrainSettings Foam::bsmsTrainSettings::read
     t.spec = readModelSpec(dict, mesh);
     readTrainer(dict, t);
     readBatch(dict, nRanks, rank, t);
-
-    t.maxTrainTime = getPositive(dict, "maxTrainTime", 1e30);
-    t.checkpointInterval =
-        getLabelAtLeast(dict, "checkpointInterval", t.nSteps, 1);
-    t.printInterval =
-        getLabelAtLeast(dict, "printInterval", max(t.nSteps/20, 1), 1);
-    t.checkpoint = getAsOrDefault<fileName>
-    (
-        dict, "checkpoint", fileName("constant/bsmsModel.pt"), "a file name"
-    );
-    t.checkpoint.expand();
-    if (!t.checkpoint.isAbsolute())
-    {
-        t.checkpoint = runTime.path()/t.checkpoint;
-    }
+    readRun(dict, runTime, t);
     t.startTime = getAsOrDefault<scalar>(dict, "startTime", -GREAT, "a time");
     t.cases = getCases(dict, fileNameList(1, fileName(".")));
 

@@ -53,6 +53,34 @@ double Foam::procStatusMB(const std::string& key)
 }
 
 
+void Foam::checkRanksAgree(const std::uint64_t hash)
+{
+    if (!Pstream::parRun()) return;
+    const label nRanks = Pstream::nProcs();
+    char buf[40];
+    std::snprintf
+    (
+        buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(hash)
+    );
+    List<word> hashes(nRanks);
+    hashes[Pstream::myProcNo()] = buf;
+    Pstream::gatherList(hashes);
+    if (!Pstream::master()) return;
+    label nSame = 0;
+    for (const word& h : hashes) nSame += (h == hashes[0]);
+    if (nSame != nRanks)
+    {
+        FatalErrorInFunction
+            << "The ranks' parameters differ after training (hashes "
+            << hashes << "): the data-parallel steps went out of"
+            << " step; the checkpoint is the master's"
+            << exit(FatalError);
+    }
+    Info<< "Parameters identical on all " << nRanks << " ranks"
+        << " (hash " << hashes[0] << ")" << nl;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructor  * * * * * * * * * * * * * * //
 
 Foam::bsmsTrainingRun::bsmsTrainingRun

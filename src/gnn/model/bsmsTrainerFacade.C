@@ -112,11 +112,26 @@ double bsmsTrainerFacade::trainShards
     const std::int64_t nMine,
     const std::int64_t nShards,
     const std::int64_t nTotal,
-    rankSum& sum
+    rankSum& sum,
+    const std::vector<const bsmsData::world*>& frames
 )
 {
     fpeTrapsOff noTraps;
     auto& t = impl_->trainer;
+    std::function<void(std::int64_t, std::int64_t)> select;
+    if (!frames.empty())
+    {
+        select = [&t, &frames](const std::int64_t b, const std::int64_t n)
+        {
+            t.net().setWorlds
+            (
+                std::vector<const bsmsData::world*>
+                (
+                    frames.begin() + b, frames.begin() + b + n
+                )
+            );
+        };
+    }
     const std::int64_t nNodes = t.net().nNodes();
     const auto X = torch::tensor(x, torch::kFloat64)
         .reshape({-1, nNodes, t.netConfig().nIn});
@@ -126,7 +141,8 @@ double bsmsTrainerFacade::trainShards
     (
         X, Y, first, nMine, nShards, nTotal,
         [&sum](std::vector<float>& v) { sum(v); },
-        [&sum](std::vector<double>& v) { sum(v); }
+        [&sum](std::vector<double>& v) { sum(v); },
+        select
     );
 }
 

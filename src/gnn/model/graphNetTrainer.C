@@ -300,7 +300,8 @@ double graphNetTrainer::trainShards
     const std::int64_t nShards,
     const std::int64_t nTotal,
     const std::function<void(std::vector<float>&)>& sumOverRanks,
-    const std::function<void(std::vector<double>&)>& sumOverRanksD
+    const std::function<void(std::vector<double>&)>& sumOverRanksD,
+    const std::function<void(std::int64_t, std::int64_t)>& selectShard
 )
 {
     torch::Tensor x = checked(xIn, netConfig_.nIn);
@@ -414,6 +415,10 @@ double graphNetTrainer::trainShards
             );
             xs = xs + torch::randn(xs.sizes(), gen, xs.options())
                *torch::tensor(sd, xs.options());
+        }
+        if (selectShard)
+        {
+            selectShard(off(k) - off(first), off(k + 1) - off(k));
         }
         optimizer_->zero_grad();
         const torch::Tensor l = trainingLoss(xs, ys);

@@ -27,6 +27,24 @@ Foam::lagrangianStepper::lagrangianStepper
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
+gnnTorch::trainerSettings Foam::lagrangianStepper::network
+(
+    const label latent,
+    const label hidden
+)
+{
+    gnnTorch::trainerSettings t;
+    t.model = "bsms";
+    t.world = 1;
+    t.nIn = nIn;
+    t.nOut = nOut;
+    t.latent = latent;
+    t.hidden = hidden;
+    t.noiseStd = {0.0};
+    return t;
+}
+
+
 bsmsData::world Foam::lagrangianStepper::world(const pointField& x) const
 {
     graph_->move(x);
