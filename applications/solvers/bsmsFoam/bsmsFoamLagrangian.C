@@ -34,7 +34,9 @@ instantList rolloutFrames(const Time& runTime, const scalar deltaT, label& prev)
     prev = -1;
     const instant* first = nullptr;
     const instant* before = nullptr;
-    for (const instant& t : runTime.times())
+    // The list outlives the loop: first and before point into it
+    const instantList times(runTime.times());
+    for (const instant& t : times)
     {
         if (t.name() == "constant" || t.value() > t0 - tol) continue;
         if (!first) first = &t;
