@@ -218,12 +218,7 @@ int Foam::bsmsFoamLagrangian
             << spec.name() << " describes on this case's graph: "
             << e.what() << exit(FatalIOError);
     }
-    const lagrangianStepper::predictor model =
-        [&](const std::vector<double>& in, const bsmsData::world& w)
-        {
-            net.setWorlds({&w});
-            return net.predict(in);
-        };
+    const lagrangianStepper::predictor model(lagrangianStepper::predictorOf(net));
     Info<< "Model " << modelFile << ": BSMS-GNN of moving bodies, "
         << r.nPoints() << " material points and " << r.nNodes() - r.nPoints()
         << " actuator nodes, levels of " << stepper.pooling().nLevels()

@@ -232,12 +232,7 @@ int Foam::bsmsTrainLagrangian
     for (label b = 0; b < c.nMine; ++b) ptrs[b] = &worlds[b];
     bsmsPstreamSum rankSum;
     // The model as a predictor (a rollout's steps, rolled inputs)
-    const lagrangianSamples::predictor model =
-        [&](const std::vector<double>& in, const bsmsData::world& w)
-        {
-            net.setWorlds({&w});
-            return net.predict(in);
-        };
+    const lagrangianStepper::predictor model(lagrangianStepper::predictorOf(net));
     if (s.rolloutSteps > 1)
     {
         Info<< "Rolled inputs: after the normalisers' "

@@ -45,6 +45,19 @@ gnnTorch::trainerSettings Foam::lagrangianStepper::network
 }
 
 
+Foam::lagrangianStepper::predictor Foam::lagrangianStepper::predictorOf
+(
+    gnnTorch::bsmsTrainerFacade& net
+)
+{
+    return [&net](const std::vector<double>& in, const bsmsData::world& w)
+    {
+        net.setWorlds({&w});
+        return net.predict(in);
+    };
+}
+
+
 bsmsData::world Foam::lagrangianStepper::world(const pointField& x) const
 {
     graph_->move(x);
