@@ -169,6 +169,7 @@ int main(int argc, char *argv[])
         gas.step(runTime);
         if (coupled)
         {
+            coupled->solver().logTreated(runTime.timeName());
             // Every step: gas + solid totals (the solid's energy kinetic
             // plus elastic, psi V0); at write times the parts as well
             scalar m, ke;
@@ -196,7 +197,11 @@ int main(int argc, char *argv[])
     }
 
     gas.summary();
-    if (coupled) coupled->summary();
+    if (coupled)
+    {
+        coupled->summary();
+        coupled->solver().summaryTreated();
+    }
     Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
         << "  ClockTime = " << runTime.elapsedClockTime() << " s"
         << nl << nl << "End" << nl << endl;

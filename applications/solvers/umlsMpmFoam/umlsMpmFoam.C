@@ -294,6 +294,7 @@ int main(int argc, char *argv[])
                 << runTime.timeName() << exit(FatalError);
         }
         ++steps;
+        solver.logTreated(runTime.timeName());
         if (!solver.energyBounded(P))
         {
             FatalErrorInFunction
@@ -360,6 +361,7 @@ int main(int argc, char *argv[])
             << " s on average";
     }
     Info<< nl;
+    solver.summaryTreated();
     if (par.valid())
     {
         const scalar comm = mpmParallel::commTime();

@@ -128,6 +128,24 @@ struct region
         }
         return false;
     }
+
+    //- The entries that place the region, for messages
+    string placement() const
+    {
+        OStringStream os;
+        switch (type)
+        {
+            case regionType::box:
+                os << "min " << lo << ", max " << hi;
+                break;
+            case regionType::cellZone:
+                os << "zone of " << zoneCells.size() << " cells";
+                break;
+            default:
+                os << "centre " << centre << ", radius " << radius;
+        }
+        return os.str();
+    }
 };
 
 } // End anonymous namespace
@@ -178,6 +196,8 @@ int main(int argc, char *argv[])
     }
 
     mpmParticles P;
+    // Each region's placement, for the message if all of them are empty
+    OStringStream placements;
     const entry* re = setDict.findEntry("regions", keyType::LITERAL);
     if (!re || !re->isStream())
     {
@@ -203,7 +223,14 @@ int main(int argc, char *argv[])
                 {
                     if (!d.found(k, keyType::LITERAL))
                     {
-                        missingEntry(d, k, "a point (x y z)");
+                        missingEntry
+                        (
+                            d, k,
+                            d.found("type", keyType::LITERAL)
+                          ? "a point (x y z)"
+                          : "a point (x y z): a region without an entry"
+                            " 'type' is a box"
+                        );
                     }
                 }
                 r.lo = getBoundedVector(d, "min", Zero, 1e30, "a point");
@@ -301,7 +328,8 @@ int main(int argc, char *argv[])
                 {
                     OStringStream found, allowed;
                     found << "a region from " << lo << " to " << hi
-                        << " (reaching outside the mesh)";
+                        << " (" << r.placement()
+                        << ": reaching outside the mesh)";
                     allowed << "regions inside the mesh bounds "
                         << mesh.bounds();
                     badEntry(d, key, found.str(), allowed.str());
@@ -523,6 +551,8 @@ int main(int argc, char *argv[])
             allowed << "regions inside the mesh, bounds " << mesh.bounds();
             badEntry(d, "type", found.str(), allowed.str());
         }
+        placements << nl << "        " << e.keyword() << ": "
+            << r.placement();
         if (P.size() == before)
         {
             WarningInFunction
@@ -537,7 +567,8 @@ int main(int argc, char *argv[])
     {
         FatalIOErrorInFunction(setDict)
             << "Entry 'regions' in " << setDict.name() << " seeds no"
-            << " particle: every region is empty" << nl
+            << " particle: every region is empty:"
+            << placements.str().c_str() << nl
             << "    allowed: regions that hold at least one particle"
             << exit(FatalIOError);
     }

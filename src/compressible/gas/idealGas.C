@@ -118,9 +118,18 @@ Foam::idealGas::idealGas(const dictionary& dict)
             );
         }
     }
-    else
+    else if (thermo.found("Cv"))
     {
         cv = getPositive(thermo, "Cv");
+    }
+    else
+    {
+        missingEntry
+        (
+            thermo, "Cp",
+            "Cp > R = RR/molWeight = " + Foam::name(R_)
+          + ", or else an entry Cv > 0"
+        );
     }
     gamma_ = (cv + R_)/cv;
     if (!gammaOk(gamma_))

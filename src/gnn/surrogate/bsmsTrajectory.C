@@ -65,7 +65,8 @@ Foam::bsmsTrajectory Foam::bsmsTrajectory::read
         FatalIOErrorInFunction(dict)
             << "The case " << tr.dir << " (entry 'cases' in " << dict.name()
             << ") has " << times.size() << " written time(s) from t = "
-            << (tStart > -GREAT ? tStart : 0) << " on; at least 2 are"
+            << (tStart > -GREAT ? tStart : 0) << " (entry 'startTime')"
+            << " on; at least 2 are"
             << " needed for a training pair (no pairs: empty dataset)"
             << exit(FatalIOError);
     }

@@ -205,6 +205,10 @@ Foam::mpmSolver::mpmSolver
     hMin_(*std::min_element(mesh.vertexSize().begin(), mesh.vertexSize().end())),
     grid_(mesh.nVertices()),
     anyFbar_(false),
+    inversion_(dict, mesh.offAxes()),
+    treatedStep_(0),
+    treatedTotal_(0),
+    particleSteps_(0),
     contact_(nullptr),
     contactDt_(GREAT),
     contactDtNext_(-1),
@@ -774,6 +778,7 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
     Fnew_.setSize(nP);
     Jnew_.setSize(nP);
     vGrid_.setSize(nP);
+    label nTreated = 0;
     for (label p = 0; p < nP; ++p)
     {
         tensor gradV(Zero);
@@ -786,16 +791,52 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
         }
         vGrid_[p] = vg;
         Fnew_[p] = (I + dt*gradV) & P.F[p];
-        const scalar J = det(Fnew_[p]);
+        scalar J = det(Fnew_[p]);
+        // A particle that would invert clamped (inversionClamp); one that
+        // stays proper, however crushed, follows its material
+        if
+        (
+            inversion_.on() && !(J > 0) && std::isfinite(J)
+         && inversion_.apply(Fnew_[p])
+        )
+        {
+            ++nTreated;
+            J = det(Fnew_[p]);
+        }
         Jnew_[p] = J;
         if (!(J > 0) || !std::isfinite(J))
         {
             failure_ = "particle " + Foam::name(p) + " at "
                 + Foam::name(P.x[p]) + " would invert: det F = "
-                + Foam::name(J) + " (time step too large, or the material"
-                " is crushed)";
+                + Foam::name(J)
+                + (
+                    inversion_.on()
+                  ? string(" (a non-finite deformation)")
+                  : string
+                    (
+                        " (time step too large, or the material is crushed;"
+                        " the treatment clamp of the entry 'inversion' of"
+                        " mpmProperties would clamp the particle)"
+                    )
+                );
             break;
         }
+    }
+    // More treated particles than the share allowed: the scene, not a
+    // few particles, is crushed (every rank sees the same sums)
+    label nAll = nP;
+    if (par_)
+    {
+        reduce(nTreated, sumOp<label>());
+        reduce(nAll, sumOp<label>());
+    }
+    if (failure_.empty() && nTreated > inversion_.maxShare()*nAll)
+    {
+        failure_ = Foam::name(nTreated) + " of " + Foam::name(nAll)
+            + " particles would invert in this step (more than"
+            " maxShare " + Foam::name(inversion_.maxShare()) + " of them,"
+            " entry 'inversion' of mpmProperties): the time step is too"
+            " large or the material too soft for its load";
     }
     if (contact_ && failure_.empty())
     {
@@ -868,8 +909,31 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
         }
     }
 
+    treatedStep_ = nTreated;
+    treatedTotal_ += nTreated;
+    particleSteps_ += nAll;
     time_ += dt;
     return true;
+}
+
+
+void Foam::mpmSolver::logTreated(const word& timeName) const
+{
+    if (treatedStep_ == 0) return;
+    Info<< "    inversion clamp: " << treatedStep_ << " particles at t = "
+        << timeName << " (" << treatedTotal_ << " particle-steps in this"
+        << " run)" << nl;
+}
+
+
+void Foam::mpmSolver::summaryTreated() const
+{
+    if (!inversion_.on()) return;
+    Info<< "Inversion clamp (minStretch " << float(inversion_.minStretch())
+        << "): " << treatedTotal_ << " of " << particleSteps_
+        << " particle-steps treated (share "
+        << (particleSteps_ > 0 ? treatedTotal_/particleSteps_ : 0) << ")"
+        << nl;
 }
 
 

@@ -3,14 +3,16 @@
 
 keys: L (length), n (cells), left/right (gas patch kinds: inlet, outlet,
 wall), gas states rhoL uL pL (x < x0) and rhoR uR pR, x0, slab (xmin xmax),
-rhoS, E, nu, vS (slab velocity), tEnd, write (interval), mpmCFL.
+rhoS, E, nu, vS (slab velocity), tEnd, write (interval), mpmCFL,
+maxRetries (the gas's), treatment (of particles that would invert: clamp
+or stop).
 """
 import os, sys
 a = dict(L=1.0, n=400, left='wall', right='wall', x0=-1.0,
          rhoL=1.0, uL=0.0, pL=1.0, rhoR=1.0, uR=0.0, pR=1.0,
          xs0=0.8, xs1=0.9, rhoS=1000.0, E=1000.0, nu=0.25, vS=0.0,
          xa=-1.0, CGtol=1e-10, kernel="bspline2", tEnd=0.5, write=0.25, mpmCFL=0.5, order='couplingFirst',
-         ghostInit='ambient')
+         ghostInit='ambient', maxRetries=5, treatment='clamp')
 d = sys.argv[1]
 for kv in sys.argv[2:]:
     k, v = kv.split('=')
@@ -47,7 +49,8 @@ interpolationSchemes { default linear; } snGradSchemes { default corrected; }
 ''')
 w('system/fvSolution', 'dictionary', 'fvSolution', '\n')
 w('system/shockMpmDict', 'dictionary', 'shockMpmDict', f'''
-gas {{ stepper semiImplicit; scheme WENO5; timeIntegration RK3; CFL 0.5; CGtolerance {a["CGtol"]}; }}
+gas {{ stepper semiImplicit; scheme WENO5; timeIntegration RK3; CFL 0.5; CGtolerance {a["CGtol"]};
+      maxRetries {a["maxRetries"]}; }}
 boundaries {{ left {{ type {a["left"]}; }} right {{ type {a["right"]}; }} }}
 coupling {{ order {a["order"]}; ghostInit {a["ghostInit"]}; }}
 ''')
@@ -56,6 +59,7 @@ w('constant/thermophysicalProperties', 'dictionary',
 w('constant/mpmProperties', 'dictionary', 'mpmProperties', f'''
 kernel {a["kernel"]}; transfer FLIP; CFL {a["mpmCFL"]};
 materials {{ slab {{ type linearElastic; rho {a["rhoS"]}; E {a["E"]}; nu {a["nu"]}; }} }}
+inversion {{ treatment {a["treatment"]}; }}
 ''')
 w('system/mpmSetParticlesDict', 'dictionary', 'mpmSetParticlesDict', f'''
 regions ( slab {{ type box; min ({a["xs0"]} -1 -1); max ({a["xs1"]} 1 1);

@@ -20,6 +20,9 @@ Each targets_<area>.py module defines TARGETS, a list of dicts:
               first component); 'libs' and 'dimensions' are left alone
     clean     optional bash run in base after the clean run (remove outputs)
     skip      optional [entry paths]: entries left alone (say why in a comment)
+    foreign   optional [entry paths]: entries that OpenFOAM's own code reads
+              and reports (say which in a comment): a FatalError that does
+              not name them counts as 'foreign', not 'unnamed'
     timeout   optional, seconds for one run (default: -timeout)
 
 Every leaf entry gets each mutation:
@@ -33,8 +36,11 @@ Each run is classified:
 
     ok           exit 0 and no non-finite number in its log
     named        non-zero exit with a FOAM FATAL (IO) ERROR whose message
-                 names the entry (its keyword) - what we want for bad input
+                 names the entry (its keyword, as a word of its own, after
+                 the case's paths and the lines that say where in the code
+                 it was raised are removed) - what we want for bad input
     unnamed      non-zero exit with a FatalError that does not name the entry
+    foreign      the same for an entry the target lists as 'foreign'
     signal       killed by a signal (SIGFPE, SIGSEGV, abort ...) or a stack
                  trace from a signal handler
     hang         did not end within the time limit
@@ -192,7 +198,7 @@ def bad_value(mutation, current):
     return MUTATIONS[mutation]
 
 
-def classify(rc, hung, logtext, keyword, mutation="", written=()):
+def classify(rc, hung, logtext, keyword, mutation="", written=(), paths=()):
     """The class of one run (see the module's doc) and a short reason."""
     if hung:
         return "hang", ""
@@ -228,9 +234,31 @@ def classify(rc, hung, logtext, keyword, mutation="", written=()):
         return "ok", ""
     if not fatal:
         return "other", "exit %d" % rc
-    if keyword in fatal:
+    if names_entry(fatal, keyword, paths):
         return "named", first
     return "unnamed", first
+
+
+# the lines of a FatalError that say where in the code it was raised (the
+# function and the source file); the 'file:' line stays: OpenFOAM's parser
+# names the entry's scope there (".../0/p.internalField at line 18")
+WHERE_LINE = re.compile(r"^\s*(From function|From |in file )")
+
+
+def names_entry(fatal, keyword, paths=()):
+    """Whether the message of a FatalError names the entry's keyword as a
+    word of its own.  The case's paths are removed first (a run's directory
+    holds the entry's name), and so are the lines that only say where in
+    the code it was raised: a message that prints the file's path does not name
+    the entry by doing so.  An entry's scope in the dictionary
+    (mpmProperties.materials.disk.E) names it."""
+    text = fatal
+    for p in sorted(set(paths), key=len, reverse=True):
+        if p:
+            text = text.replace(p, "<case>")
+    body = "\n".join(l for l in text.splitlines()[1:] if not WHERE_LINE.match(l))
+    word = r"(?<![\w])%s(?![\w])" % re.escape(keyword)
+    return re.search(word, body) is not None
 
 
 def nonfinite_outputs(run, t0, mutated):
@@ -348,9 +376,12 @@ def main():
         with open(log, errors="replace") as f:
             text = f.read()
         cls, why = classify(rc, hung, text, e[0].split("/")[-1], m,
-                            nonfinite_outputs(run, t0, fname) if rc == 0 else ())
+                            nonfinite_outputs(run, t0, fname) if rc == 0 else (),
+                            (run, os.path.realpath(run), out, os.path.realpath(out)))
+        if cls == "unnamed" and e[0] in t.get("foreign", []):
+            cls = "foreign"
         result = (t["name"], fname, e[0], m, shown, cls, rc, round(secs, 2), why[:160])
-        if cls in ("ok", "named") and not a.keep:
+        if cls in ("ok", "named", "foreign") and not a.keep:
             shutil.rmtree(run, ignore_errors=True)
         done[0] += 1
         el = time.time() - t_start
@@ -370,7 +401,7 @@ def main():
                     "seconds", "message"])
         w.writerows(results)
 
-    classes = ["ok", "named", "unnamed", "signal", "hang", "nan", "other"]
+    classes = ["ok", "named", "foreign", "unnamed", "signal", "hang", "nan", "other"]
     print("\n%-28s %s" % ("target", " ".join("%8s" % c for c in classes)))
     for name in sorted(set(r[0] for r in results)):
         rs = [r for r in results if r[0] == name]

@@ -103,6 +103,9 @@ DICT
         "run": "decomposePar -force",
         "clean": "rm -rf processor*",
         "files": {"system/decomposeParDict": None},
+        # read by OpenFOAM's decomposePar itself (decompositionMethod::New):
+        # its "Unknown decompositionMethod type <value>" names the value
+        "foreign": ["method"],
         "timeout": 30,
     },
 ]

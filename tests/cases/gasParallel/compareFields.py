@@ -7,7 +7,8 @@
 # processor file holds e.g. 8e-302.
 # Prints "<maxRel> <maxScaled> <nValues> <nFiles> <worstFile>": maxRel the
 # largest |a - b|/max(|a|, |b|) value by value, maxScaled the largest
-# |a - b|/max|a| of a file.
+# |a - b|/max|a| of a file.  Comparing no file at all is an error (exit 1,
+# "inf inf 0 0 (none)"): a check must not pass on nothing.
 import os, re, sys
 
 num = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
@@ -37,4 +38,8 @@ for name in sorted(os.listdir(a)):
                 worst, worstFile = d, name
             scaled = max(scaled, abs(x - y)/big)
     n += len(va)
+if files == 0:
+    print("inf inf 0 0 (none)")
+    sys.stderr.write("compareFields.py: no field file in both %s and %s\n" % (a, b))
+    sys.exit(1)
 print("%.3e %.3e %d %d %s" % (worst, scaled, n, files, worstFile))

@@ -8,7 +8,8 @@ tensor and scalar IOFields) and prints one line:
     <max relative difference> <particles> <fields compared> <worst field>
 The difference of a field is the largest |a - b| over the particles and
 components, relative to the largest |a| of that field (positions: to the
-cloud's extent).  Exit status 2 if the particles differ (count or ids).
+cloud's extent).  Exit status 2 if the particles differ (count or ids) or
+there are none: a check must not pass on nothing.
 """
 import re
 import sys
@@ -53,7 +54,7 @@ def main():
                               'mass', 'V0', 'psi']
     ida = [int(v[0]) for v in body(a + '/id')]
     idb = [int(v[0]) for v in body(b + '/id')]
-    if sorted(ida) != sorted(idb) or len(set(ida)) != len(ida):
+    if not ida or sorted(ida) != sorted(idb) or len(set(ida)) != len(ida):
         print('inf %d 0 ids' % len(ida))
         sys.exit(2)
     posb = {i: k for k, i in enumerate(idb)}

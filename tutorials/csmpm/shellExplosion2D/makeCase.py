@@ -2,7 +2,7 @@
 """Write the exploding-shell case (dissertation 3.3.2, Fig. 3.10) into
 directory D: python3 makeCase.py D [n=256] [tEnd=0.12] [write=0.005]
 [pIn=50] [rhoIn=7] [rhoS=10] [E=500] [nu=0.3] [rIn=0.1] [rOut=0.12]
-[material=neoHookean] [yield=5] [notches=4]
+[material=neoHookean] [yield=5] [notches=4] [cx=0.5] [cy=0.5] [ux=0] [uy=0]
 
 The unit square, outlets all round (the far field at rest); gas rho 1.4,
 p 1 (sound speed 1) outside, hot compressed gas (rhoIn, pIn: sound speed
@@ -14,11 +14,13 @@ slots of one cell's width cut through the ring at equal angles (the first
 at 45 degrees) are where it bursts first: scored like a grenade's case, so
 that the burst is reproducible rather than left to round-off (0: none).
 material henckyJ2 makes the shell plastic (yield stress 'yield').
+(cx, cy) moves the shell and its hot gas off the centre, (ux, uy) gives
+the shell a drift velocity (a scene with momentum, for the tests).
 """
 import math, os, sys
 a = dict(n=256, tEnd=0.12, write=0.005, pIn=50.0, rhoIn=7.0, rhoS=10.0,
          E=500.0, nu=0.3, rIn=0.1, rOut=0.12, material='neoHookean',
-         notches=4, **{'yield': 5.0})
+         notches=4, cx=0.5, cy=0.5, ux=0.0, uy=0.0, **{'yield': 5.0})
 d = sys.argv[1]
 for kv in sys.argv[2:]:
     k, v = kv.split('=')
@@ -39,12 +41,13 @@ boundary
     frontAndBack {{ type empty; faces ((0 3 2 1) (4 5 6 7)); }}
 );
 ''')
+cx, cy = a['cx'], a['cy']
 notch = ''
 for k in range(int(a['notches'])):
     th = math.pi/4 + 2*math.pi*k/int(a['notches'])
     c, s = math.cos(th), math.sin(th)
     L = 1.3*a['rOut'] - 0.7*a['rIn']; h = dx
-    ox = 0.5 + 0.7*a['rIn']*c + 0.5*h*s; oy = 0.5 + 0.7*a['rIn']*s - 0.5*h*c
+    ox = cx + 0.7*a['rIn']*c + 0.5*h*s; oy = cy + 0.7*a['rIn']*s - 0.5*h*c
     notch += (f'    {{ name shell; type cellSet; action delete; source rotatedBoxToCell;'
               f' origin ({ox} {oy} -1); i ({L*c} {L*s} 0); j ({-h*s} {h*c} 0);'
               f' k (0 0 2); }}\n')
@@ -52,10 +55,10 @@ w('system/topoSetDict', 'dictionary', 'topoSetDict', f'''
 actions
 (
     {{ name shell; type cellSet; action new; source cylinderAnnulusToCell;
-       p1 (0.5 0.5 -1); p2 (0.5 0.5 1); outerRadius {a["rOut"]}; innerRadius {a["rIn"]}; }}
+       p1 ({cx} {cy} -1); p2 ({cx} {cy} 1); outerRadius {a["rOut"]}; innerRadius {a["rIn"]}; }}
 {notch}    {{ name shell; type cellZoneSet; action new; source setToCellZone; set shell; }}
     {{ name hot; type cellSet; action new; source cylinderToCell;
-       p1 (0.5 0.5 -1); p2 (0.5 0.5 1); radius {a["rIn"]}; }}
+       p1 ({cx} {cy} -1); p2 ({cx} {cy} 1); radius {a["rIn"]}; }}
 );
 ''')
 w('system/setFieldsDict', 'dictionary', 'setFieldsDict', f'''
@@ -90,8 +93,9 @@ w('constant/mpmProperties', 'dictionary', 'mpmProperties', f'''
 kernel bspline2; transfer APIC; CFL 0.5;
 materials {{ shell {{ {mat} }} }}
 ''')
-w('system/mpmSetParticlesDict', 'dictionary', 'mpmSetParticlesDict', '''
-regions ( shell { type cellZone; zone shell; material shell; perCell 2; } );
+w('system/mpmSetParticlesDict', 'dictionary', 'mpmSetParticlesDict', f'''
+regions ( shell {{ type cellZone; zone shell; material shell; perCell 2;
+    velocity ({a["ux"]} {a["uy"]} 0); }} );
 ''')
 with open(os.path.join(d, 'caseInfo'), 'w') as f:
     f.write(f'{n} {n} {dx!r}\n')
