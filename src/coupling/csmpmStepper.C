@@ -555,6 +555,18 @@ Foam::scalar Foam::csmpmStepper::stableDeltaT
 }
 
 
+void Foam::csmpmStepper::compactRemoved(DynamicList<scalar>& f) const
+{
+    const List<bool>& gone = solver_.removed();
+    label n = 0;
+    forAll(gone, p)
+    {
+        if (!gone[p]) f[n++] = f[p];
+    }
+    f.setSize(n);
+}
+
+
 bool Foam::csmpmStepper::advance
 (
     const gasState& U,
@@ -569,6 +581,12 @@ bool Foam::csmpmStepper::advance
     {
         rep.failure = solver_.failure();
         return false;
+    }
+    if (solver_.removed().size())
+    {
+        // Particles that left through an outlet: their J^g and lambda^g go
+        compactRemoved(Jg_);
+        compactRemoved(lambdaG_);
     }
     if (par_.valid())
     {

@@ -294,7 +294,7 @@ int main(int argc, char *argv[])
                 << runTime.timeName() << exit(FatalError);
         }
         ++steps;
-        solver.logTreated(runTime.timeName());
+        solver.logParticleEvents(runTime.timeName());
         if (!solver.energyBounded(P))
         {
             FatalErrorInFunction
@@ -361,7 +361,7 @@ int main(int argc, char *argv[])
             << " s on average";
     }
     Info<< nl;
-    solver.summaryTreated();
+    solver.summaryParticleEvents();
     if (par.valid())
     {
         const scalar comm = mpmParallel::commTime();

@@ -86,6 +86,20 @@ bool Foam::functionObjects::mpmConservation::execute()
     forAll(acts, k) actForce[k] = returnReduce(acts[k].force(), sumOp<vector>());
     const scalar actWork = acts.empty() ? 0 : state.solver().actuatorWork();
 
+    // Outlets: what left the scene through them
+    const bool outlets =
+        returnReduce(state.solver().boundary().hasOutlets(), orOp<bool>());
+    const mpmSolver::totals out =
+        outlets
+      ? state.solver().departed()
+      : mpmSolver::totals{0, Zero, Zero, 0, 0, 0};
+    const scalar outEnergy = out.kinetic + out.strain + out.gravitational;
+    if (outlets)
+    {
+        setResult("outMass", out.mass);
+        setResult("outEnergy", outEnergy);
+    }
+
     if (Pstream::master())
     {
         if (!file_)
@@ -114,6 +128,12 @@ bool Foam::functionObjects::mpmConservation::execute()
                     << n << "_Fz [N]";
             }
             if (acts.size()) file_() << "\tactuatorWork [J]";
+            if (outlets)
+            {
+                file_()
+                    << "\toutMass [kg]\toutPx [kg m/s]\toutPy [kg m/s]"
+                    << "\toutPz [kg m/s]\toutEnergy [J]";
+            }
             file_() << nl;
         }
         OFstream& os = file_();
@@ -133,6 +153,12 @@ bool Foam::functionObjects::mpmConservation::execute()
                 << '\t' << f.x() << '\t' << f.y() << '\t' << f.z();
         }
         if (acts.size()) os << '\t' << actWork;
+        if (outlets)
+        {
+            os  << '\t' << out.mass << '\t' << out.momentum.x() << '\t'
+                << out.momentum.y() << '\t' << out.momentum.z() << '\t'
+                << outEnergy;
+        }
         os  << endl;   // flushed: kept if the run stops
     }
     return true;

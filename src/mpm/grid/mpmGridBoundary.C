@@ -22,7 +22,25 @@ Foam::mpmGridBoundary::bcTypeNames
     { bcType::fixed, "fixed" },
     { bcType::slip, "slip" },
     { bcType::separable, "separable" },
+    { bcType::outlet, "outlet" },
 });
+
+
+bool Foam::mpmGridBoundary::throughOutlet(const vector& x) const
+{
+    scalar best = GREAT;
+    bool outlet = false;
+    forAll(exitFaceCentre_, f)
+    {
+        const scalar d = magSqr(solved_ & (x - exitFaceCentre_[f]));
+        if (d < best)
+        {
+            best = d;
+            outlet = exitFaceOutlet_[f];
+        }
+    }
+    return outlet;
+}
 
 
 void Foam::mpmGridBoundary::set
@@ -101,6 +119,12 @@ Foam::mpmGridBoundary::mpmGridBoundary
             (
                 bd, "box", "two points ((xmin ymin zmin) (xmax ymax zmax))"
             );
+            if (t == bcType::outlet)
+            {
+                dictionaryChecks::badEntry(bd, "type", "outlet",
+                    "fixed, slip, separable or free (an outlet is a patch,"
+                    " not a box)");
+            }
             vector n(Zero);
             if (t == bcType::slip || t == bcType::separable)
             {
@@ -150,7 +174,50 @@ Foam::mpmGridBoundary::mpmGridBoundary
         {
             dictionaryChecks::badEntry(dict, e.keyword(),
                 dictionaryChecks::entryText(dict, e.keyword()),
-                "a sub-dictionary { type fixed | slip | separable | free; }");
+                "a sub-dictionary { type fixed | slip | separable | free"
+                " | outlet; }");
+        }
+    }
+
+    // Outlets: every face a particle can leave through, and whether it is
+    // on an outlet (the nearest one tells a leaving particle's patch)
+    bool anyOutlet = false;
+    for (const polyPatch& pp : patches)
+    {
+        const dictionary* pd = dict.findDict(pp.name(), keyType::REGEX);
+        if
+        (
+            pd && !pd->found("box", keyType::LITERAL)
+         && dictionaryChecks::getEnum(*pd, "type", bcTypeNames, bcType::free)
+         == bcType::outlet
+        )
+        {
+            anyOutlet = true;
+        }
+    }
+    if (anyOutlet)
+    {
+        solved_ = tensor::I - view.offAxes();
+        for (const polyPatch& pp : patches)
+        {
+            if
+            (
+                isA<emptyPolyPatch>(pp) || isA<wedgePolyPatch>(pp)
+             || isA<processorPolyPatch>(pp)
+            )
+            {
+                continue;
+            }
+            const dictionary* pd = dict.findDict(pp.name(), keyType::REGEX);
+            const bool outlet =
+                pd && !pd->found("box", keyType::LITERAL)
+             && dictionaryChecks::getEnum(*pd, "type", bcTypeNames, bcType::free)
+             == bcType::outlet;
+            for (const vector& c : pp.faceCentres())
+            {
+                exitFaceCentre_.append(c);
+                exitFaceOutlet_.append(outlet);
+            }
         }
     }
 
@@ -170,7 +237,7 @@ Foam::mpmGridBoundary::mpmGridBoundary
         (
             *pd, "type", bcTypeNames, bcType::free
         );
-        if (t == bcType::free) continue;
+        if (t == bcType::free || t == bcType::outlet) continue;
 
         // Per vertex: the area-weighted normal of this patch
         Map<vector> patchNormal;

@@ -209,6 +209,8 @@ Foam::mpmSolver::mpmSolver
     treatedStep_(0),
     treatedTotal_(0),
     particleSteps_(0),
+    departed_{0, Zero, Zero, 0, 0, 0},
+    departedStep_(0),
     contact_(nullptr),
     contactDt_(GREAT),
     contactDtNext_(-1),
@@ -555,18 +557,52 @@ bool Foam::mpmSolver::energyBounded(const mpmParticles& P)
 }
 
 
+void Foam::mpmSolver::removeDeparted(mpmParticles& P)
+{
+    // What they carry out, as conservation() counts it
+    mpmParticles out;
+    forAll(leaving_, p)
+    {
+        if (leaving_[p]) out.appendFrom(P, p);
+    }
+    const totals t = localTotals(out);
+    departed_.mass += t.mass;
+    departed_.momentum += t.momentum;
+    departed_.angularMomentum += t.angularMomentum;
+    departed_.kinetic += t.kinetic;
+    departed_.strain += t.strain;
+    departed_.gravitational += t.gravitational;
+
+    P.remove(leaving_);
+    removed_ = leaving_;
+    leaving_.clear();
+    materialStart_ = P.sortByMaterial(materials_.size());
+    if (contact_) contact_->invalidate();
+}
+
+
 bool Foam::mpmSolver::beginStep(mpmParticles& P)
 {
     const label nP = P.size();
     failure_.clear();
+    removed_.clear();
 
     // 1. Locate (walk from the previous cell; in parallel the last
     // step's migration located them, unless one had left the mesh)
     const bool located = located_;
     located_ = false;
+    label nLeaving = 0;
     for (label p = 0; p < nP && !located; ++p)
     {
         const label c = mesh_.findCell(P.x[p], P.cell[p]);
+        if (c < 0 && boundary_.hasOutlets() && boundary_.throughOutlet(P.x[p]))
+        {
+            // Out through an outlet: it leaves the scene
+            if (leaving_.empty()) leaving_.setSize(nP, false);
+            leaving_[p] = true;
+            ++nLeaving;
+            continue;
+        }
         if (c < 0 || (par_ && c >= par_->nOwnedCells()))
         {
             failure_ = "particle " + Foam::name(p) + " at "
@@ -575,7 +611,14 @@ bool Foam::mpmSolver::beginStep(mpmParticles& P)
         }
         P.cell[p] = c;
     }
-    if (!agreed(failure_.empty(), "has left the mesh")) return false;
+    if (!agreed(failure_.empty(), "has left the mesh"))
+    {
+        leaving_.clear();
+        return false;
+    }
+    departedStep_ = nLeaving;
+    if (par_) reduce(departedStep_, sumOp<label>());
+    if (nLeaving) removeDeparted(P);
 
     // Weights, active vertices
     kernel_->compute(P.x, P.cell, kw_);
@@ -917,27 +960,49 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
 }
 
 
-void Foam::mpmSolver::logTreated(const word& timeName) const
+void Foam::mpmSolver::logParticleEvents(const word& timeName) const
 {
-    if (treatedStep_ == 0) return;
-    Info<< "    inversion clamp: " << treatedStep_ << " particles at t = "
-        << timeName << " (" << treatedTotal_ << " particle-steps in this"
-        << " run)" << nl;
+    if (treatedStep_ > 0)
+    {
+        Info<< "    inversion clamp: " << treatedStep_ << " particles at t = "
+            << timeName << " (" << treatedTotal_ << " particle-steps in"
+            << " this run)" << nl;
+    }
+    if (departedStep_ > 0)
+    {
+        const totals d = departed();
+        Info<< "    outlets: " << departedStep_ << " particles left at"
+            << " t = " << timeName << "; out in this run: mass " << d.mass
+            << ", momentum " << d.momentum << ", energy "
+            << d.kinetic + d.strain + d.gravitational << nl;
+    }
 }
 
 
-void Foam::mpmSolver::summaryTreated() const
+void Foam::mpmSolver::summaryParticleEvents() const
 {
-    if (!inversion_.on()) return;
-    Info<< "Inversion clamp (minStretch " << float(inversion_.minStretch())
-        << "): " << treatedTotal_ << " of " << particleSteps_
-        << " particle-steps treated (share "
-        << (particleSteps_ > 0 ? treatedTotal_/particleSteps_ : 0) << ")"
-        << nl;
+    if (inversion_.on())
+    {
+        Info<< "Inversion clamp (minStretch "
+            << Foam::name(inversion_.minStretch()).c_str() << "): " << treatedTotal_
+            << " of " << particleSteps_ << " particle-steps treated (share "
+            << (particleSteps_ > 0 ? treatedTotal_/particleSteps_ : 0)
+            << ")" << nl;
+    }
+    if (boundary_.hasOutlets() || par_)
+    {
+        const totals d = departed();
+        if (d.mass > 0)
+        {
+            Info<< "Outlets: out in this run mass " << d.mass
+                << ", momentum " << d.momentum << ", kinetic energy "
+                << d.kinetic << ", strain energy " << d.strain << nl;
+        }
+    }
 }
 
 
-Foam::mpmSolver::totals Foam::mpmSolver::conservation
+Foam::mpmSolver::totals Foam::mpmSolver::localTotals
 (
     const mpmParticles& P
 ) const
@@ -965,6 +1030,12 @@ Foam::mpmSolver::totals Foam::mpmSolver::conservation
         t.strain += P.V0[p]*P.psi[p];
         t.gravitational -= m*(gravity_ & P.x[p]);
     }
+    return t;
+}
+
+
+Foam::mpmSolver::totals Foam::mpmSolver::sumOverRanks(totals t) const
+{
     if (par_)
     {
         // One gather and scatter for all the sums
@@ -992,6 +1063,21 @@ Foam::mpmSolver::totals Foam::mpmSolver::conservation
         }
     }
     return t;
+}
+
+
+Foam::mpmSolver::totals Foam::mpmSolver::conservation
+(
+    const mpmParticles& P
+) const
+{
+    return sumOverRanks(localTotals(P));
+}
+
+
+Foam::mpmSolver::totals Foam::mpmSolver::departed() const
+{
+    return sumOverRanks(departed_);
 }
 
 

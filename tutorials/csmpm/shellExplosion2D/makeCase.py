@@ -92,6 +92,7 @@ if a['material'] == 'henckyJ2':
 w('constant/mpmProperties', 'dictionary', 'mpmProperties', f'''
 kernel bspline2; transfer APIC; CFL 0.5;
 materials {{ shell {{ {mat} }} }}
+boundary {{ open {{ type outlet; }} }}
 ''')
 w('system/mpmSetParticlesDict', 'dictionary', 'mpmSetParticlesDict', f'''
 regions ( shell {{ type cellZone; zone shell; material shell; perCell 2;
