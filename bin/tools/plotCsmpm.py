@@ -3,6 +3,7 @@
 pictures with the particles drawn on them, and the solid's numbers.
 
     plotCsmpm.py CASE NAME [-times t1,t2,...] [-box x0,x1,y0,y1]
+                 [-minFragment 20]
 
 Reads the cell centres (CASE/0/C, postProcess -func writeCellCentres), the
 gas density and the cloud (positions, U, mass) of every written time.
@@ -10,10 +11,11 @@ Writes NAME_schlieren.png: the numerical schlieren exp(-15 |grad rho| /
 max |grad rho|) of the chosen times (default: four spread over the run)
 with the particles in red (cells outside the mesh are grey), and
 NAME_solid.dat: per written time the number of fragments (particles
-joined when closer than 1.5 cells: connected components of the
-neighbour graph), the
-solid's mass, momentum and centre, the largest particle speed, and per
-fragment of two or more particles its mass, centre and velocity.
+joined when closer than 1.5 cells, connected components of the
+neighbour graph, of at least minFragment particles), the solid's mass,
+momentum and centre, the largest particle speed and the number of strays
+(the particles of smaller clusters), and per fragment its mass, centre
+and velocity.
 The last time's lines are printed.  A 3D case is drawn in its mid-plane
 z = const (the cells there, the particles within a cell of it); its
 fragments and totals are the whole cloud's.
@@ -27,6 +29,7 @@ import matplotlib.pyplot as plt
 
 case, name = sys.argv[1], sys.argv[2]
 opts = {k.lstrip('-'): v for k, v in zip(sys.argv[3::2], sys.argv[4::2])}
+minFrag = int(opts.get('minFragment', 20))
 num = r'[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?'
 dx = float(open(f'{case}/caseInfo').read().split()[2])
 
@@ -87,8 +90,8 @@ times = sorted((d for d in os.listdir(case)
 rows = []
 with open(f'{name}_solid.dat', 'w') as f:
     f.write('# t fragments mass momentum_x momentum_y centre_x centre_y '
-            'maxParticleSpeed\n#   then per fragment (>= 2 particles): '
-            '"frag" mass centre_x centre_y U_x U_y\n')
+            'maxParticleSpeed strays\n#   then per fragment (>= %d '
+            'particles): "frag" mass centre_x centre_y U_x U_y\n' % minFrag)
     for t in times:
         x = cloud(t, 'positions'); U = cloud(t, 'U'); m = cloud(t, 'mass')
         if len(x) == 0:
@@ -97,25 +100,28 @@ with open(f'{name}_solid.dat', 'w') as f:
         M = m.sum(); P = (m[:, None]*U).sum(axis=0)
         c = (m[:, None]*x).sum(axis=0)/M
         frs = []
+        strays = 0
         for L in np.unique(lab):
             k = lab == L
-            if k.sum() < 2:
+            if k.sum() < minFrag:
+                strays += int(k.sum())
                 continue
             mk = m[k].sum()
             frs.append((mk, *((m[k][:, None]*x[k]).sum(axis=0)/mk)[:2],
                         *((m[k][:, None]*U[k]).sum(axis=0)/mk)[:2]))
         frs.sort(key=lambda r: -r[0])
         vmax = np.sqrt((U**2).sum(axis=1)).max()
-        row = (float(t), len(np.unique(lab)), M, P[0], P[1], c[0], c[1], vmax)
+        row = (float(t), len(frs), M, P[0], P[1], c[0], c[1], vmax, strays)
         rows.append((row, frs, t))
-        f.write('%.6g %d %.10g %.6e %.6e %.6f %.6f %.6f\n' % row)
+        f.write('%.6g %d %.10g %.6e %.6e %.6f %.6f %.6f %d\n' % row)
         for r in frs:
             f.write('  frag %.6g %.5f %.5f %.5f %.5f\n' % r)
 if rows:
     row, frs, t = rows[-1]
-    print('  t = %g: %d fragments, solid mass %.10g, momentum (%.3e %.3e), '
-          'largest particle speed %.4f' % (row[0], row[1], row[2], row[3],
-                                           row[4], row[7]))
+    print('  t = %g: %d fragments (>= %d particles) and %d strays, solid '
+          'mass %.10g, momentum (%.3e %.3e), largest particle speed %.4f'
+          % (row[0], row[1], minFrag, row[8], row[2], row[3], row[4],
+             row[7]))
 
 if 'times' in opts:
     pick = opts['times'].split(',')

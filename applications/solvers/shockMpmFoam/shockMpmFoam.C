@@ -114,6 +114,8 @@ int main(int argc, char *argv[])
             mesh, gas.dict(), gas.op(), std::move(gasOnly), gas.state()
         );
         gas.setStepper(autoPtr<gasStepper>(coupled));
+        // (the gas + solid totals below include what crossed the patches)
+        gas.logTotals(false);
         if (coupled->freshStart())
         {
             // The gas in cells the solid partly covers fills the open
@@ -181,12 +183,18 @@ int main(int argc, char *argv[])
             gas.totals(gm, gmom, ge);
             const scalar sc = coupled->lattice().scale();
             // What left through outlets (mpmGridBoundary) counts with the
-            // solid, so that the solid's part of the budget closes
+            // solid, what crossed the gas's patches with the gas, so that
+            // the budget closes
             const mpmSolver::totals out = coupled->solver().departed();
-            Info<< "    gas + solid (step): mass " << gm + sc*(m + out.mass)
-                << ", momentum " << gmom + sc*(mom + out.momentum)
+            scalar gmOut, geOut;
+            vector gmomOut;
+            gas.crossed(gmOut, gmomOut, geOut);
+            Info<< "    gas + solid (step): mass "
+                << gm + gmOut + sc*(m + out.mass)
+                << ", momentum " << gmom + gmomOut + sc*(mom + out.momentum)
                 << ", energy "
-                << ge + sc*(ke + se + out.kinetic + out.strain) << nl;
+                << ge + geOut + sc*(ke + se + out.kinetic + out.strain)
+                << nl;
             if (runTime.writeTime())
             {
                 coupled->write();

@@ -46,6 +46,11 @@ Usage
                     wavenumber  (0.0628319 0 0);
                 }
                 F           (1 0 0 0 1 0 0 0 1);   // optional, default I
+                densityVariation            // optional: masses rho V0
+                {                           // (1 + a xi), xi uniform in
+                    amplitude   0.05;       // [-1, 1], hashed from seed
+                    seed        1;          // and position (see
+                }                           // densityVariation.H)
             }
         );
     \endverbatim
@@ -66,6 +71,7 @@ Usage
 #include "mpmMeshView.H"
 #include "mpmSolver.H"
 #include "mpmCloudIO.H"
+#include "densityVariation.H"
 #include "dictionaryChecks.H"
 #include "cellZoneMesh.H"
 #include "cloud.H"
@@ -342,6 +348,8 @@ int main(int argc, char *argv[])
             getAs<word>(d, "material", "a material of constant/mpmProperties"), d
         );
         const scalar rho = solver.materials()[mat].rho();
+        // (seeded heterogeneity: each particle's mass rho V0 (1 + a xi))
+        const densityVariation variation(d);
         // Bounds that keep the solver's products (m |v|^2, stresses,
         // energies) finite
         const vector U0 = getBoundedVector(d, "velocity", Zero, 1e30, "a velocity");
@@ -456,7 +464,11 @@ int main(int argc, char *argv[])
                 }
                 guess = c;
                 const scalar V0 = std::pow(s, dim)/J0;
-                P.append(x, velocity(x), F0, rho*V0, V0, mat, c);
+                P.append
+                (
+                    x, velocity(x), F0, rho*V0*variation.factor(x), V0,
+                    mat, c
+                );
             }
         }
         else
@@ -538,7 +550,11 @@ int main(int argc, char *argv[])
                 {
                     x = ((I - Q) & x) + mid;
                     const scalar V0 = Vc/pts.size()/J0;
-                    P.append(x, velocity(x), F0, rho*V0, V0, mat, c);
+                    P.append
+                    (
+                        x, velocity(x), F0, rho*V0*variation.factor(x), V0,
+                        mat, c
+                    );
                 }
             }
         }
@@ -560,7 +576,13 @@ int main(int argc, char *argv[])
         }
         Info<< "Region " << e.keyword() << ": " << P.size() - before
             << " particles of material "
-            << solver.materials()[mat].name() << nl;
+            << solver.materials()[mat].name();
+        if (variation.amplitude() > 0)
+        {
+            Info<< ", density varied by +-" << variation.amplitude()
+                << " (seeded)";
+        }
+        Info<< nl;
     }
 
     if (P.size() == 0)

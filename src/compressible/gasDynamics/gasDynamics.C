@@ -231,6 +231,26 @@ Foam::gasDynamics::gasDynamics(const fvMesh& mesh)
             }
         }
     }
+    forAll(bcs_, pi)
+    {
+        if
+        (
+            bcs_.set(pi)
+         && (
+                bcs_[pi].kindOf() == gasBoundary::kind::inlet
+             || bcs_[pi].kindOf() == gasBoundary::kind::outlet
+            )
+        )
+        {
+            openPatches_ = true;
+        }
+    }
+    reduce(openPatches_, orOp<bool>());
+    logTotals_ = getAsOrDefault<bool>
+    (
+        gasDict, "logTotals", openPatches_, "true or false"
+    );
+
     // A periodic line must be periodic at both ends and span the domain
     for (label d = 0; d < 3; ++d)
     {
@@ -391,8 +411,10 @@ void Foam::gasDynamics::step(Time& runTime)
 
     gasStepper::report rep;
     label tries = 0;
+    stepper_->clearCrossed();
     while (!stepper_->advance(U_, dt, Unew_, rep))
     {
+        stepper_->clearCrossed();
         if (tries == maxRetries_)
         {
             // Write the last good state and stop
@@ -435,6 +457,7 @@ void Foam::gasDynamics::step(Time& runTime)
     ++runTime;
     std::swap(U_, Unew_);
     toFields();
+    for (int c = 0; c < 5; ++c) crossed_[c] += stepper_->crossed()[c];
 
     ++nSteps_;
     nFallback_ += rep.fallbackCells;
@@ -463,6 +486,18 @@ void Foam::gasDynamics::step(Time& runTime)
         Info<< "  " << rep.info.c_str();
     }
     Info<< nl;
+
+    if (logTotals_)
+    {
+        scalar m, e, mc, ec;
+        vector mom, momc;
+        totals(m, mom, e);
+        crossed(mc, momc, ec);
+        const label prec = Info().precision(15);
+        Info<< "    totals + crossed (step): mass " << m + mc << ", momentum "
+            << mom + momc << ", energy " << e + ec << nl;
+        Info().precision(prec);
+    }
 
     if (runTime.writeTime())
     {
@@ -497,6 +532,14 @@ void Foam::gasDynamics::summary() const
             << nExplicitSubsteps_ << " acoustic sub-steps)";
     }
     Info<< nl;
+    {
+        scalar m, e;
+        vector mom;
+        crossed(m, mom, e);
+        Info<< "    crossed the patches (outward; walls take momentum):"
+            << " mass " << m << ", momentum " << mom << ", energy " << e
+            << nl;
+    }
     if (corners_->type() == wallCorners::treatment::entropyReset)
     {
         Info<< "Corner entropy resets: " << nCornerCells_ << " cells; mass "

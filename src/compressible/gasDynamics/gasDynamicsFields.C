@@ -374,4 +374,20 @@ void Foam::gasDynamics::totals
 }
 
 
+void Foam::gasDynamics::crossed
+(
+    scalar& mass,
+    vector& momentum,
+    scalar& energy
+) const
+{
+    mass = crossed_[0];
+    momentum = vector(crossed_[1], crossed_[2], crossed_[3]);
+    energy = crossed_[4];
+    reduce(mass, sumOp<scalar>());
+    reduce(momentum, sumOp<vector>());
+    reduce(energy, sumOp<scalar>());
+}
+
+
 // ************************************************************************* //

@@ -213,6 +213,33 @@ void Foam::eulerOperator::computeFluxes(const gasState& U, bool advective)
 }
 
 
+void Foam::eulerOperator::boundaryFlux(double B[5]) const
+{
+    for (int c = 0; c < 5; ++c) B[c] = 0;
+    for (label d = 0; d < 3; ++d)
+    {
+        if (!mesh_.active(d)) continue;
+        const double A = mesh_.cellVolume()/mesh_.dx(d);
+        for (const auto& s : mesh_.segments(d))
+        {
+            if (bcs_[s.lowPatch].kindOf() == gasBoundary::kind::periodic)
+            {
+                continue;
+            }
+            // (the line's out minus in first: equal end fluxes, as at
+            // two walls in a gas at rest, cancel exactly)
+            const label lo = s.faceOffset, hi = s.faceOffset + s.length;
+            for (int c = 0; c < 5; ++c)
+            {
+                const double in = s.lowGhost < 0 ? F_[d][c][lo] : 0;
+                const double out = s.highGhost < 0 ? F_[d][c][hi] : 0;
+                B[c] += A*(out - in);
+            }
+        }
+    }
+}
+
+
 void Foam::eulerOperator::firstOrderSlotFace
 (
     const gasState& U,

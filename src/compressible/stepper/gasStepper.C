@@ -217,18 +217,36 @@ bool Foam::gasStepper::rungeKutta
     report& rep
 )
 {
+    // What crossed the patches combines as the states do, from none at U:
+    // acc = b (acc + dt B(Us)) per stage (RK3: dt (B0 + B1 + 4 B2)/6)
+    double acc[5] = {0, 0, 0, 0, 0};
+    auto crossing = [&](scalar b)
+    {
+        double B[5];
+        op_.boundaryFlux(B);
+        for (int c = 0; c < 5; ++c) acc[c] = b*(acc[c] + dt*B[c]);
+        return true;
+    };
+    bool ok;
     if (rk_ == rkOrder::RK2)
     {
         // TVD RK2 (Heun)
-        return
-            stage(U, U, 0, 1, dt, advective, U1_, rep)
-         && stage(U, U1_, 0.5, 0.5, dt, advective, out, rep);
+        ok =
+            stage(U, U, 0, 1, dt, advective, U1_, rep) && crossing(1)
+         && stage(U, U1_, 0.5, 0.5, dt, advective, out, rep) && crossing(0.5);
     }
-    // TVD RK3 (Shu and Osher)
-    return
-        stage(U, U, 0, 1, dt, advective, U1_, rep)
-     && stage(U, U1_, 0.75, 0.25, dt, advective, U2_, rep)
-     && stage(U, U2_, 1.0/3.0, 2.0/3.0, dt, advective, out, rep);
+    else
+    {
+        // TVD RK3 (Shu and Osher)
+        ok =
+            stage(U, U, 0, 1, dt, advective, U1_, rep) && crossing(1)
+         && stage(U, U1_, 0.75, 0.25, dt, advective, U2_, rep)
+         && crossing(0.25)
+         && stage(U, U2_, 1.0/3.0, 2.0/3.0, dt, advective, out, rep)
+         && crossing(2.0/3.0);
+    }
+    for (int c = 0; c < 5; ++c) crossed_[c] += acc[c];
+    return ok;
 }
 
 

@@ -3,7 +3,8 @@
 a density wave, a uniform drift and a pressure pulse (a weak blast), so
 every conserved variable has fluxes through every face.
 
-    initialState.py <case> periodic|walls
+    initialState.py <case> periodic|walls|open
+(open: patches of type patch, the gas drifting out through them)
 """
 import math
 import sys
@@ -13,7 +14,7 @@ import os
 os.makedirs(case + "/0", exist_ok=True)
 n = 40
 patch = "cyclic" if kind == "periodic" else "zeroGradient"
-walls = kind != "periodic"
+walls = kind == "walls"
 
 
 def write(name, cls, dims, values, vector=False):

@@ -3,6 +3,7 @@
 directory D: python3 makeCase.py D [n=256] [tEnd=0.12] [write=0.005]
 [pIn=50] [rhoIn=7] [rhoS=10] [E=500] [nu=0.3] [rIn=0.1] [rOut=0.12]
 [material=neoHookean] [yield=5] [notches=4] [cx=0.5] [cy=0.5] [ux=0] [uy=0]
+[vary=0] [seed=1] [walls=0]
 
 The unit square, outlets all round (the far field at rest); gas rho 1.4,
 p 1 (sound speed 1) outside, hot compressed gas (rhoIn, pIn: sound speed
@@ -16,11 +17,16 @@ that the burst is reproducible rather than left to round-off (0: none).
 material henckyJ2 makes the shell plastic (yield stress 'yield').
 (cx, cy) moves the shell and its hot gas off the centre, (ux, uy) gives
 the shell a drift velocity (a scene with momentum, for the tests).
+vary > 0 gives the ring a seeded random density heterogeneity: each
+particle's mass times 1 + vary xi, xi uniform in [-1, 1] hashed from seed
+and its position (mpmSetParticles' densityVariation).  walls=1 closes the
+box (reflective walls for the gas and the solid) instead of outlets.
 """
 import math, os, sys
 a = dict(n=256, tEnd=0.12, write=0.005, pIn=50.0, rhoIn=7.0, rhoS=10.0,
          E=500.0, nu=0.3, rIn=0.1, rOut=0.12, material='neoHookean',
-         notches=4, cx=0.5, cy=0.5, ux=0.0, uy=0.0, **{'yield': 5.0})
+         notches=4, cx=0.5, cy=0.5, ux=0.0, uy=0.0, vary=0.0, seed=1, walls=0,
+         **{'yield': 5.0})
 d = sys.argv[1]
 for kv in sys.argv[2:]:
     k, v = kv.split('=')
@@ -37,7 +43,7 @@ vertices ( (0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 {dx}) (1 0 {dx}) (1 1 {dx}) (0 1
 blocks ( hex (0 1 2 3 4 5 6 7) ({n} {n} 1) simpleGrading (1 1 1) );
 boundary
 (
-    open {{ type patch; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2)); }}
+    open {{ type {'wall' if a['walls'] else 'patch'}; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2)); }}
     frontAndBack {{ type empty; faces ((0 3 2 1) (4 5 6 7)); }}
 );
 ''')
@@ -81,9 +87,9 @@ interpolationSchemes { default linear; } snGradSchemes { default corrected; }
 w('system/fvSolution', 'dictionary', 'fvSolution', '\n')
 w('system/shockMpmDict', 'dictionary', 'shockMpmDict', '''
 gas { stepper semiImplicit; scheme WENO5; timeIntegration RK3; CFL 0.5; }
-boundaries { open { type outlet; } }
+boundaries { open { type %s; } }
 coupling { order couplingFirst; ghostInit ambient; }
-''')
+''' % ('wall' if a['walls'] else 'outlet'))
 w('constant/thermophysicalProperties', 'dictionary',
   'thermophysicalProperties', 'gamma 1.4; R 1;\n')
 mat = f'type {a["material"]}; rho {a["rhoS"]}; E {a["E"]}; nu {a["nu"]};'
@@ -92,16 +98,19 @@ if a['material'] == 'henckyJ2':
 w('constant/mpmProperties', 'dictionary', 'mpmProperties', f'''
 kernel bspline2; transfer APIC; CFL 0.5;
 materials {{ shell {{ {mat} }} }}
-boundary {{ open {{ type outlet; }} }}
+boundary {{ open {{ type {'slip' if a['walls'] else 'outlet'}; }} }}
 ''')
+vary = (f' densityVariation {{ amplitude {a["vary"]}; seed {int(a["seed"])}; }}'
+        if a['vary'] > 0 else '')
 w('system/mpmSetParticlesDict', 'dictionary', 'mpmSetParticlesDict', f'''
 regions ( shell {{ type cellZone; zone shell; material shell; perCell 2;
-    velocity ({a["ux"]} {a["uy"]} 0); }} );
+    velocity ({a["ux"]} {a["uy"]} 0);{vary} }} );
 ''')
 with open(os.path.join(d, 'caseInfo'), 'w') as f:
     f.write(f'{n} {n} {dx!r}\n')
 for name, cls, dim, val in (('p', 'volScalarField', '[1 -1 -2 0 0 0 0]', 'uniform 1'),
                              ('rho', 'volScalarField', '[1 -3 0 0 0 0 0]', 'uniform 1.4'),
                              ('U', 'volVectorField', '[0 1 -1 0 0 0 0]', 'uniform (0 0 0)')):
+    bc = 'slip' if a['walls'] and name == 'U' else 'zeroGradient'
     w('0/' + name, cls, name, f'dimensions {dim};\ninternalField {val};\n'
-      'boundaryField { open { type zeroGradient; } frontAndBack { type empty; } }\n')
+      f'boundaryField {{ open {{ type {bc}; }} frontAndBack {{ type empty; }} }}\n')
