@@ -662,7 +662,16 @@ bool Foam::csmpmStepper::pressureStep
         mergeCoveredCells(out);
         lastRepaired_ = repairNearSolid(out);
     }
-    lastRepaired_ += repairAnywhere(out);
+    // A pooled pair can still be inadmissible where a tearing film leaves
+    // near-vacuum on both sides of a face: pool again, the pair with its
+    // fullest neighbour, a few times (each pass conservative)
+    for (label pass = 0; pass < 4; ++pass)
+    {
+        label r = repairAnywhere(out);
+        if (par) reduce(r, maxOp<label>());
+        lastRepaired_ += r;
+        if (r == 0) break;
+    }
 
     bool ok = true;
     for (const label i : cells_)

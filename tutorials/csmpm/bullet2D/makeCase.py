@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Write the 2D bullet case (dissertation 3.3.2, Fig. 3.12) into directory
 D: python3 makeCase.py D [n=80] [tEnd=0.8] [write=0.01] [rhoS=100]
-[E=1e4] [nu=0.25] [pC=50] [rhoC=7] [corner=none] [gap=0]
+[E=1e6] [nu=0.25] [pC=50] [rhoC=7] [corner=none] [gap=0]
 
 A gun: the barrel is the channel x in [0, 1], y in [0.4, 0.6] (walls:
 the breech at x = 0 and the bore, patch 'barrel'; the gun's front face at
@@ -12,13 +12,13 @@ at rest (sound speed 1); the chamber x < 0.2 holds hot compressed gas
 (pC, rhoC: by default 50 and 7, ten times the air's temperature, sound
 speed 3.16).  The bullet fills the bore from x = 0.2 to 0.35: density
 rhoS (the heavy bullet 100, the light one 40: the dissertation's 1250 and
-500 in the ratio 2.5), neoHookean E 1e4, nu 0.25 (strains of 0.5 % under the
-chamber pressure), sliding on the bore (MPM slip on 'barrel').  'gap'
+500 in the ratio 2.5), neoHookean E 1e6 (Table 3.1's), nu 0.25 (strains
+of 5e-5 under the chamber pressure), sliding on the bore (MPM slip on 'barrel').  'gap'
 narrows the bullet by that much on each side (windage; 0: it fills the
 bore); 'corner' is the gas solver's cornerTreatment.
 """
 import os, sys
-a = dict(n=80, tEnd=0.8, write=0.01, rhoS=100.0, E=1.0e4, nu=0.25,
+a = dict(n=80, tEnd=0.8, write=0.01, rhoS=100.0, E=1.0e6, nu=0.25,
          pC=50.0, rhoC=7.0, corner='none', gap=0.0)
 d = sys.argv[1]
 for kv in sys.argv[2:]:
