@@ -540,33 +540,8 @@ bool Foam::csmpmStepper::pressureStep
         }
         // What the pressure carries through the patches: the interior
         // impulses J sum to p_first - p_last per line (less the solid's
-        // share), the boundary faces' work is the flux below
-        {
-            const scalar A = mesh_.cellVolume()/dx;
-            for (const auto& s : mesh_.segments(d))
-            {
-                if (bcs[s.lowPatch].kindOf() == gasBoundary::kind::periodic)
-                {
-                    continue;
-                }
-                // (out minus in per line: equal ends cancel exactly)
-                double pIn = 0, pOut = 0, wIn = 0, wOut = 0;
-                if (s.lowGhost < 0)
-                {
-                    const label f = s.faceOffset;
-                    pIn = pF[f];
-                    wIn = pF[f]*open[f]*uF[f];
-                }
-                if (s.highGhost < 0)
-                {
-                    const label f = s.faceOffset + s.length;
-                    pOut = pF[f];
-                    wOut = pF[f]*open[f]*uF[f];
-                }
-                crossed_[1 + d] += dt*A*(pOut - pIn);
-                crossed_[4] += dt*A*(wOut - wIn);
-            }
-        }
+        // share), the boundary faces' work is the energy flux below
+        addPressureCrossing(d, dt, pF, uF, &open);
 
         const std::vector<label>& nodes = lattice_.nodes(d);
         const std::vector<double>& w = wNorm_[d];

@@ -250,6 +250,42 @@ bool Foam::gasStepper::rungeKutta
 }
 
 
+void Foam::gasStepper::addPressureCrossing
+(
+    label d,
+    scalar dt,
+    const std::vector<double>& pF,
+    const std::vector<double>& uF,
+    const std::vector<double>* open
+)
+{
+    const PtrList<gasBoundary>& bcs = op_.boundaries();
+    const scalar A = mesh_.cellVolume()/mesh_.dx(d);
+    for (const auto& s : mesh_.segments(d))
+    {
+        if (bcs[s.lowPatch].kindOf() == gasBoundary::kind::periodic)
+        {
+            continue;
+        }
+        double pIn = 0, pOut = 0, wIn = 0, wOut = 0;
+        if (s.lowGhost < 0)
+        {
+            const label f = s.faceOffset;
+            pIn = pF[f];
+            wIn = pF[f]*(open ? (*open)[f] : 1.0)*uF[f];
+        }
+        if (s.highGhost < 0)
+        {
+            const label f = s.faceOffset + s.length;
+            pOut = pF[f];
+            wOut = pF[f]*(open ? (*open)[f] : 1.0)*uF[f];
+        }
+        crossed_[1 + d] += dt*A*(pOut - pIn);
+        crossed_[4] += dt*A*(wOut - wIn);
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::gasStepper::acousticRate

@@ -394,30 +394,7 @@ bool Foam::gasSteppers::semiImplicitStepper::advance
 
         // What the pressure carries through the patches: the cells' p at
         // a wall, inlet or outlet face, with the face velocity's work
-        const scalar A = V/dx;
-        for (const auto& s : mesh_.segments(d))
-        {
-            if (bcs[s.lowPatch].kindOf() == gasBoundary::kind::periodic)
-            {
-                continue;
-            }
-            // (out minus in per line: equal ends cancel exactly)
-            double pIn = 0, pOut = 0, wIn = 0, wOut = 0;
-            if (s.lowGhost < 0)
-            {
-                const label f = s.faceOffset;
-                pIn = pF[f];
-                wIn = pF[f]*uF[f];
-            }
-            if (s.highGhost < 0)
-            {
-                const label f = s.faceOffset + s.length;
-                pOut = pF[f];
-                wOut = pF[f]*uF[f];
-            }
-            crossed_[1 + d] += dt*A*(pOut - pIn);
-            crossed_[4] += dt*A*(wOut - wIn);
-        }
+        addPressureCrossing(d, dt, pF, uF, nullptr);
 
         const auto& lowFace = mesh_.lowFaceOf(d);
         std::vector<double>& m = out.q[1 + d];
