@@ -114,7 +114,9 @@ Usage
     field missing from a case's time directory, a case with fewer than two
     written times and a checkpoint that does not match stop with a
     FatalIOError naming the file and the entry.  Every step's loss goes to
-    postProcessing/bsmsTrain/loss.dat (step, loss, learning rate).
+    postProcessing/bsmsTrain/loss.dat (step, loss, learning rate).  A
+    resumed run (the next stage of a curriculum, say rolloutSteps 4 after
+    one-step training) adds to loss.dat and validation.dat.
 
     Gradient shards: every step's batch of B pairs is cut into
     gradientShards = S contiguous shards (shard k: pairs [k B/S,

@@ -100,14 +100,40 @@ Foam::bsmsTrainingRun::bsmsTrainingRun
     dict_(dict),
     parallel_(Pstream::parRun()),
     master_(Pstream::master()),
-    outDir_(casePath/"postProcessing"/"bsmsTrain")
+    outDir_(casePath/"postProcessing"/"bsmsTrain"),
+    resumed_(m.net().step() > 0)
 {
     if (master_)
     {
         mkDir(outDir_);
-        lossFile_.reset(new OFstream(outDir_/"loss.dat"));
-        lossFile_() << "# step loss lr" << nl;
+        if (!openHistory(lossFile_, "loss.dat"))
+        {
+            lossFile_() << "# step loss lr" << nl;
+        }
     }
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::bsmsTrainingRun::openHistory
+(
+    autoPtr<OFstream>& file,
+    const word& name
+) const
+{
+    // A resumed run (a curriculum's next stage, or an interrupted one)
+    // adds to the history of the run it resumes
+    const bool append = resumed_ && isFile(outDir_/name);
+    file.reset
+    (
+        new OFstream
+        (
+            outDir_/name, IOstream::ASCII, IOstream::currentVersion,
+            IOstream::UNCOMPRESSED, append
+        )
+    );
+    return append;
 }
 
 
@@ -157,9 +183,8 @@ void Foam::bsmsTrainingRun::reportPersistence() const
 void Foam::bsmsTrainingRun::validate(const label step, const bool last)
 {
     if (d_.valid.empty() || !master_) return;
-    if (!validationFile_.valid())
+    if (!validationFile_.valid() && !openHistory(validationFile_, "validation.dat"))
     {
-        validationFile_.reset(new OFstream(outDir_/"validation.dat"));
         validationFile_()
             << "# step case RMSE-1 RMSE-50 RMSE-all inferenceSecondsPerStep"
             << nl;
