@@ -270,6 +270,54 @@ TEST(graphNetTorch, checkpointBitForBit)
 }
 
 
+// The learning rate: lrMin + (lr - lrMin) lrDecay^(max(step - decayFrom,
+// 0)/decaySteps); a resumed stage that anneals from its own first step
+// (decayFrom = that step) starts at lr there, whatever the step
+TEST(graphNetTorch, learningRateDecayFrom)
+{
+    const bsmsData::hierarchy h = gridHierarchies::grid(8, 6, 8);
+    const advectionDiffusion problem{8, 6};
+    torch::manual_seed(5);
+    std::vector<std::pair<torch::Tensor, torch::Tensor>> data;
+    for (int s = 0; s < 4; ++s) data.push_back(problem.batch(2));
+
+    trainerConfig tc = smallTraining(2);
+    graphNetTrainer A(h, smallConfig("bsms"), tc);
+    EXPECT_DOUBLE_EQ(A.learningRate(), tc.lr);
+    for (const auto& d : data) A.trainStep(d.first, d.second);
+    ASSERT_EQ(A.step(), 4);
+    EXPECT_NEAR
+    (
+        A.learningRate(),
+        tc.lrMin + (tc.lr - tc.lrMin)*std::pow(0.1, 4.0/400), 1e-15
+    );
+
+    // The same trained state under a stage that decays from step 4
+    const std::string file = scratchFile("decayFrom.pt");
+    A.save(file);
+    trainerConfig stage = tc;
+    stage.lr = 2e-4;
+    stage.decaySteps = 10;
+    stage.decayFrom = 4;
+    graphNetTrainer B(h, smallConfig("bsms"), stage);
+    B.load(file);
+    EXPECT_DOUBLE_EQ(B.learningRate(), 2e-4);
+    B.trainStep(data[0].first, data[0].second);
+    B.trainStep(data[1].first, data[1].second);
+    EXPECT_NEAR
+    (
+        B.learningRate(), 1e-5 + (2e-4 - 1e-5)*std::pow(0.1, 2.0/10), 1e-15
+    );
+
+    // Before decayFrom the rate stays at lr (it never grows above it)
+    stage.decayFrom = 100;
+    graphNetTrainer C(h, smallConfig("bsms"), stage);
+    C.load(file);
+    EXPECT_DOUBLE_EQ(C.learningRate(), 2e-4);
+    std::remove(file.c_str());
+}
+
+
 // Bad checkpoints and inputs stop with a message naming the problem
 TEST(graphNetTorch, badInputs)
 {

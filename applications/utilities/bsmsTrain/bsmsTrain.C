@@ -89,6 +89,7 @@ Usage
         lrMin         1e-6;
         lrDecay       0.1;
         decaySteps    5e6;
+        decayFrom     0;              // the step the decay counts from
         noise         0;
         rolloutSteps  1;              // model steps per training sample
         rolloutBackprop true;         // gradient through the rollout
@@ -104,7 +105,9 @@ Usage
     (checkpointInterval: steps; printInterval: steps/20; no validation;
     gradientShards: 4, or the number of ranks if more, at most batch).
     lr and lrMin lie in (0, 1] (Adam moves a weight by up to lr a step),
-    lrDecay in (0, 1], decaySteps in [1, 1e300], noise in [0, 1e30] (the
+    lrDecay in (0, 1], decaySteps in [1, 1e300], decayFrom in [0, 1e300]
+    (a resumed stage that anneals from its own first step: lr at that
+    step, then the decay), noise in [0, 1e30] (the
     network computes in single precision).
     bsmsTrain writes the model dictionary (bsmsModelSpec) beside the
     checkpoint: constant/bsmsModel.pt -> constant/bsmsModelDict, with the

@@ -171,6 +171,12 @@ void Foam::bsmsTrainSettings::readOptimiser
         badEntry(dict, "decaySteps", name(s.decaySteps),
             "a number of steps >= 1 and <= 1e300");
     }
+    const string allowedFrom("a step >= 0 and <= 1e300");
+    s.decayFrom = getAsOrDefault<scalar>(dict, "decayFrom", 0, allowedFrom);
+    if (!(s.decayFrom >= 0 && s.decayFrom <= 1e300))
+    {
+        badEntry(dict, "decayFrom", name(s.decayFrom), allowedFrom);
+    }
     const string allowedNoise("a finite number >= 0 and <= 1e30");
     noise = getAsOrDefault<scalar>(dict, "noise", 0, allowedNoise);
     if (!(noise >= 0 && noise <= 1e30))

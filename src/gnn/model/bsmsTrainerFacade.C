@@ -45,6 +45,7 @@ trainerConfig configOf(const trainerSettings& s)
     c.lrMin = s.lrMin;
     c.lrDecay = s.lrDecay;
     c.decaySteps = s.decaySteps;
+    c.decayFrom = s.decayFrom;
     c.noiseStd = s.noiseStd;
     c.normAccumulations = s.normAccumulations;
     c.seed = s.seed;

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "graphNetTrainer.H"
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
@@ -147,7 +148,11 @@ double graphNetTrainer::learningRate() const
     return
         config_.lrMin
       + (config_.lr - config_.lrMin)
-       *std::pow(config_.lrDecay, double(step_)/config_.decaySteps);
+       *std::pow
+        (
+            config_.lrDecay,
+            std::max(double(step_) - config_.decayFrom, 0.0)/config_.decaySteps
+        );
 }
 
 
