@@ -182,16 +182,19 @@ int main(int argc, char *argv[])
             vector gmom;
             gas.totals(gm, gmom, ge);
             const scalar sc = coupled->lattice().scale();
-            // What left through outlets (mpmGridBoundary) counts with the
-            // solid, what crossed the gas's patches with the gas, so that
-            // the budget closes
+            // What left through outlets (mpmGridBoundary) and the
+            // momentum the solid's walls took count with the solid, what
+            // crossed the gas's patches (its walls' momentum too) with
+            // the gas, so that the budget closes
             const mpmSolver::totals out = coupled->solver().departed();
+            const vector wallMom = coupled->solver().wallMomentum();
             scalar gmOut, geOut;
             vector gmomOut;
             gas.crossed(gmOut, gmomOut, geOut);
             Info<< "    gas + solid (step): mass "
                 << gm + gmOut + sc*(m + out.mass)
-                << ", momentum " << gmom + gmomOut + sc*(mom + out.momentum)
+                << ", momentum "
+                << gmom + gmomOut + sc*(mom + out.momentum + wallMom)
                 << ", energy "
                 << ge + geOut + sc*(ke + se + out.kinetic + out.strain)
                 << nl;

@@ -211,6 +211,8 @@ Foam::mpmSolver::mpmSolver
     particleSteps_(0),
     departed_{0, Zero, Zero, 0, 0, 0},
     departedStep_(0),
+    wallMomentum_(Zero),
+    wallMomentumStep_(Zero),
     contact_(nullptr),
     contactDt_(GREAT),
     contactDtNext_(-1),
@@ -586,6 +588,7 @@ bool Foam::mpmSolver::beginStep(mpmParticles& P)
     const label nP = P.size();
     failure_.clear();
     removed_.clear();
+    wallMomentumStep_ = Zero;
 
     // 1. Locate (walk from the previous cell; in parallel the last
     // step's migration located them, unless one had left the mesh)
@@ -723,22 +726,21 @@ void Foam::mpmSolver::gridUpdate(const mpmParticles& P, const scalar dt)
 
 void Foam::mpmSolver::applyBoundary()
 {
-    boundary_.apply(grid_.isActive, grid_.newVelocity);
-    if (actuators_.empty()) return;
-
     // Each copy of a vertex held by several ranks counts its share
     const UList<scalar>* share = nullptr;
     if (par_)
     {
-        actuatorShare_.setSize(mesh_.nVertices());
-        for (const label i : grid_.active) actuatorShare_[i] = 1;
-        par_->sumShared(actuatorShare_, &grid_.isActive);
+        vertexShare_.setSize(mesh_.nVertices());
+        for (const label i : grid_.active) vertexShare_[i] = 1;
+        par_->sumShared(vertexShare_, &grid_.isActive);
         for (const label i : grid_.active)
         {
-            actuatorShare_[i] = 1/actuatorShare_[i];
+            vertexShare_[i] = 1/vertexShare_[i];
         }
-        share = &actuatorShare_;
+        share = &vertexShare_;
     }
+    wallMomentumStep_ +=
+        boundary_.apply(grid_.isActive, grid_.mass, grid_.newVelocity, share);
     for (mpmActuator& a : actuators_)
     {
         a.apply
@@ -747,6 +749,14 @@ void Foam::mpmSolver::applyBoundary()
             grid_.newVelocity, share
         );
     }
+}
+
+
+Foam::vector Foam::mpmSolver::wallMomentum() const
+{
+    vector M = wallMomentum_;
+    if (par_) reduce(M, sumOp<vector>());
+    return M;
 }
 
 
@@ -955,6 +965,7 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
     treatedStep_ = nTreated;
     treatedTotal_ += nTreated;
     particleSteps_ += nAll;
+    wallMomentum_ += wallMomentumStep_;
     time_ += dt;
     return true;
 }
@@ -988,6 +999,11 @@ void Foam::mpmSolver::summaryParticleEvents() const
             << " of " << particleSteps_ << " particle-steps treated (share "
             << (particleSteps_ > 0 ? treatedTotal_/particleSteps_ : 0)
             << ")" << nl;
+    }
+    if (returnReduce(boundary_.size() > 0, orOp<bool>()))
+    {
+        Info<< "Walls: the grid conditions took momentum " << wallMomentum()
+            << " from the solid in this run" << nl;
     }
     if (boundary_.hasOutlets() || par_)
     {

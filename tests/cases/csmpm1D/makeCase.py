@@ -5,14 +5,15 @@ keys: L (length), n (cells), left/right (gas patch kinds: inlet, outlet,
 wall), gas states rhoL uL pL (x < x0) and rhoR uR pR, x0, slab (xmin xmax),
 rhoS, E, nu, vS (slab velocity), tEnd, write (interval), mpmCFL,
 maxRetries (the gas's), treatment (of particles that would invert: clamp
-or stop).
+or stop), mpmRight (the MPM grid's condition on the right end: free,
+slip or fixed).
 """
 import os, sys
 a = dict(L=1.0, n=400, left='wall', right='wall', x0=-1.0,
          rhoL=1.0, uL=0.0, pL=1.0, rhoR=1.0, uR=0.0, pR=1.0,
          xs0=0.8, xs1=0.9, rhoS=1000.0, E=1000.0, nu=0.25, vS=0.0,
          xa=-1.0, CGtol=1e-10, kernel="bspline2", tEnd=0.5, write=0.25, mpmCFL=0.5, order='couplingFirst',
-         ghostInit='ambient', maxRetries=5, treatment='clamp')
+         ghostInit='ambient', maxRetries=5, treatment='clamp', mpmRight='free')
 d = sys.argv[1]
 for kv in sys.argv[2:]:
     k, v = kv.split('=')
@@ -60,6 +61,7 @@ w('constant/mpmProperties', 'dictionary', 'mpmProperties', f'''
 kernel {a["kernel"]}; transfer FLIP; CFL {a["mpmCFL"]};
 materials {{ slab {{ type linearElastic; rho {a["rhoS"]}; E {a["E"]}; nu {a["nu"]}; }} }}
 inversion {{ treatment {a["treatment"]}; }}
+boundary {{ right {{ type {a["mpmRight"]}; }} }}
 ''')
 w('system/mpmSetParticlesDict', 'dictionary', 'mpmSetParticlesDict', f'''
 regions ( slab {{ type box; min ({a["xs0"]} -1 -1); max ({a["xs1"]} 1 1);
