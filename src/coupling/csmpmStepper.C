@@ -280,6 +280,13 @@ Foam::csmpmStepper::csmpmStepper
         cDict, "gasPressureOrder", gasOrderNames, gasOrder::B1B0
     );
     if (gasOrder_ == gasOrder::B2B1) setGasB2B1(cDict);
+    audit_.setOn
+    (
+        dictionaryChecks::getAsOrDefault<bool>
+        (
+            cDict, "energyAudit", false, "true or false"
+        )
+    );
 
     Info<< "CSMPM coupling: " << returnReduce(P_.size(), sumOp<label>())
         << " particles, "
@@ -576,6 +583,7 @@ bool Foam::csmpmStepper::advance
 )
 {
     // 1. P2G: nodal masses and v*
+    if (audit_.on()) auditMark(-1, U, true);
     auto t0 = stageClock::now();
     if (!solver_.beginStep(P_))
     {
@@ -607,6 +615,7 @@ bool Foam::csmpmStepper::advance
     lattice_.deposit(P_, pg_, Kg_);
     couplingFaces();
     stageTime_[0] += secondsSince(t0);
+    if (audit_.on()) auditMark(csmpmEnergyAudit::p2g, U, false);
 
     // 3. Advection with blended fluxes (3.10-3.12)
     t0 = stageClock::now();
@@ -621,6 +630,7 @@ bool Foam::csmpmStepper::advance
     for (label d = 0; d < 3; ++d) op_.setPassable(d, nullptr);
     stageTime_[1] += secondsSince(t0);
     if (!advected) return false;
+    if (audit_.on()) auditMark(csmpmEnergyAudit::advection, Ustar_, false);
 
     // 6'. Ablation order: the MPM grid update before the coupled solve
     t0 = stageClock::now();
@@ -635,6 +645,7 @@ bool Foam::csmpmStepper::advance
     const bool solved = pressureStep(U, dt, out, rep);
     stageTime_[2] += secondsSince(t0);
     if (!solved) return false;
+    if (audit_.on()) auditMark(csmpmEnergyAudit::coupledSolve, out, false);
 
     // 6. The MPM grid update after it (3.2.8)
     t0 = stageClock::now();
@@ -647,6 +658,7 @@ bool Foam::csmpmStepper::advance
         solver_.applyBoundary();
     }
     stageTime_[3] += secondsSince(t0);
+    if (audit_.on()) auditMark(csmpmEnergyAudit::gridUpdate, out, false);
 
     // 7. G2P; J^g by (3.20) with the velocity gradient that updates F
     t0 = stageClock::now();
@@ -664,6 +676,12 @@ bool Foam::csmpmStepper::advance
         return false;
     }
 
+    if (audit_.on())
+    {
+        auditMark(csmpmEnergyAudit::g2p, out, true);
+        audit_.accept();
+    }
+
     ++nSteps_;
     cgTotal_ += rep.cgIterations;
     cgMax_ = max(cgMax_, rep.cgIterations);
@@ -676,6 +694,55 @@ bool Foam::csmpmStepper::advance
         rep.info += "  repairedCells " + std::to_string(lastRepaired_);
     }
     return true;
+}
+
+
+void Foam::csmpmStepper::auditMark
+(
+    label stage,
+    const gasState& S,
+    bool particles
+)
+{
+    // The gas: its total energy on the lattice, with what crossed its
+    // patches in this step so far
+    scalar gas = 0;
+    for (const label i : mesh_.latticeOf()) gas += S.q[4][i];
+    gas = gas*mesh_.cellVolume() + crossed_[4];
+    if (Pstream::parRun()) reduce(gas, sumOp<scalar>());
+
+    // The solid: kinetic energy of the particles or of the grid nodes,
+    // elastic energy of the particles, each with what left through outlets
+    const mpmSolver::totals out = solver_.departed();
+    scalar kinetic;
+    if (particles)
+    {
+        scalar m;
+        vector mom;
+        solidTotals(m, mom, kinetic);
+    }
+    else
+    {
+        kinetic = solver_.gridKineticEnergy();
+    }
+    const scalar sc = lattice_.scale();
+    if (particles)
+    {
+        scalar ghost = 0;
+        forAll(P_.x, p)
+        {
+            ghost += 0.5*lambdaG_[p]*(P_.V[p]/Jg_[p])*sqr(Jg_[p] - 1);
+        }
+        if (Pstream::parRun()) reduce(ghost, sumOp<scalar>());
+        audit_.markGhost(stage >= 0, sc*ghost);
+    }
+    audit_.mark
+    (
+        stage,
+        gas,
+        sc*(kinetic + out.kinetic),
+        sc*(solidStrainEnergy() + out.strain)
+    );
 }
 
 
@@ -732,6 +799,7 @@ Foam::scalar Foam::csmpmStepper::solidStrainEnergy() const
 
 void Foam::csmpmStepper::write() const
 {
+    audit_.report(("to t = " + fvMesh_.time().timeName()).c_str());
     mpmCloudIO::write(fvMesh_, cloudName_, P_);
     IOField<scalar> Jg
     (
@@ -825,6 +893,7 @@ void Foam::csmpmStepper::summary() const
             << 1e3*stageTime_[k]/max(nSteps_, label(1));
     }
     Info<< "  total " << 1e3*total/max(nSteps_, label(1)) << nl;
+    audit_.report("the run");
 }
 
 

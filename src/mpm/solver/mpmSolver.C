@@ -724,19 +724,27 @@ void Foam::mpmSolver::gridUpdate(const mpmParticles& P, const scalar dt)
 }
 
 
+void Foam::mpmSolver::updateVertexShare()
+{
+    // Each copy of a vertex held by several ranks counts its share.  Every
+    // copy sends its value, active or not: the inactive ones send 0
+    vertexShare_.setSize(mesh_.nVertices());
+    vertexShare_ = 0;
+    for (const label i : grid_.active) vertexShare_[i] = 1;
+    par_->sumShared(vertexShare_, &grid_.isActive);
+    for (const label i : grid_.active)
+    {
+        vertexShare_[i] = 1/vertexShare_[i];
+    }
+}
+
+
 void Foam::mpmSolver::applyBoundary()
 {
-    // Each copy of a vertex held by several ranks counts its share
     const UList<scalar>* share = nullptr;
     if (par_)
     {
-        vertexShare_.setSize(mesh_.nVertices());
-        for (const label i : grid_.active) vertexShare_[i] = 1;
-        par_->sumShared(vertexShare_, &grid_.isActive);
-        for (const label i : grid_.active)
-        {
-            vertexShare_[i] = 1/vertexShare_[i];
-        }
+        updateVertexShare();
         share = &vertexShare_;
     }
     wallMomentumStep_ +=
@@ -749,6 +757,29 @@ void Foam::mpmSolver::applyBoundary()
             grid_.newVelocity, share
         );
     }
+}
+
+
+Foam::scalar Foam::mpmSolver::gridKineticEnergy()
+{
+    scalar K = 0;
+    if (par_)
+    {
+        updateVertexShare();
+        for (const label i : grid_.active)
+        {
+            K += 0.5*vertexShare_[i]*grid_.mass[i]*magSqr(grid_.newVelocity[i]);
+        }
+        reduce(K, sumOp<scalar>());
+    }
+    else
+    {
+        for (const label i : grid_.active)
+        {
+            K += 0.5*grid_.mass[i]*magSqr(grid_.newVelocity[i]);
+        }
+    }
+    return K;
 }
 
 
