@@ -19,7 +19,7 @@ void Foam::csmpmEnergyAudit::accept()
 {
     if (!started_)
     {
-        initial_ = gas_[0] + kinetic_[0] + elastic_[0];
+        initial_ = gas_[0] + kinetic_[0] + kineticOut_[0] + elastic_[0];
         started_ = true;
     }
     // The particles' elastic energy changes only in G2P (F's update); it is
@@ -30,6 +30,7 @@ void Foam::csmpmEnergyAudit::accept()
         double d =
             (gas_[k + 1] - gas_[k])
           + (kinetic_[k + 1] - kinetic_[k])
+          + (kineticOut_[k + 1] - kineticOut_[k])
           + (elastic_[k + 1] - elastic_[k]);
         if (k == gridUpdate) d += dElastic;
         if (k == g2p) d -= dElastic;

@@ -711,23 +711,21 @@ void Foam::csmpmStepper::auditMark
     gas = gas*mesh_.cellVolume() + crossed_[4];
     if (Pstream::parRun()) reduce(gas, sumOp<scalar>());
 
-    // The solid: kinetic energy of the particles or of the grid nodes,
-    // elastic energy of the particles, each with what left through outlets
-    const mpmSolver::totals out = solver_.departed();
+    // The solid: kinetic energy of the particles, or of the grid nodes
+    // (between P2G and G2P: nothing moves the particles or removes any)
+    const scalar sc = lattice_.scale();
+    if (stage > csmpmEnergyAudit::p2g && stage < csmpmEnergyAudit::g2p)
+    {
+        audit_.mark(stage, gas, sc*solver_.gridKineticEnergy());
+        return;
+    }
     scalar kinetic;
     if (particles)
     {
         scalar m;
         vector mom;
         solidTotals(m, mom, kinetic);
-    }
-    else
-    {
-        kinetic = solver_.gridKineticEnergy();
-    }
-    const scalar sc = lattice_.scale();
-    if (particles)
-    {
+
         scalar ghost = 0;
         forAll(P_.x, p)
         {
@@ -736,11 +734,18 @@ void Foam::csmpmStepper::auditMark
         if (Pstream::parRun()) reduce(ghost, sumOp<scalar>());
         audit_.markGhost(stage >= 0, sc*ghost);
     }
+    else
+    {
+        kinetic = solver_.gridKineticEnergy();
+    }
+    // The particles' elastic energy, and what left through outlets
+    const mpmSolver::totals out = solver_.departed();
     audit_.mark
     (
         stage,
         gas,
-        sc*(kinetic + out.kinetic),
+        sc*kinetic,
+        sc*out.kinetic,
         sc*(solidStrainEnergy() + out.strain)
     );
 }
