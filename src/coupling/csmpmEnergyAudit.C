@@ -10,7 +10,10 @@
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 const char* const Foam::csmpmEnergyAudit::names[nStages] =
-    {"P2G", "advection", "coupled solve", "grid update", "G2P"};
+    {
+        "P2G", "advection", "coupled solve", "grid update", "G2P",
+        "solid substeps"
+    };
 
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -24,7 +27,7 @@ void Foam::csmpmEnergyAudit::accept()
     }
     // The particles' elastic energy changes only in G2P (F's update); it is
     // the work of the grid update's elastic forces, so it is booked there
-    const double dElastic = elastic_[nStages] - elastic_[g2p];
+    const double dElastic = elastic_[g2p + 1] - elastic_[g2p];
     for (label k = 0; k < nStages; ++k)
     {
         double d =

@@ -287,12 +287,19 @@ Foam::csmpmStepper::csmpmStepper
             cDict, "energyAudit", false, "true or false"
         )
     );
+    maxSubsteps_ =
+        dictionaryChecks::getLabelAtLeast(cDict, "solidSubsteps", 1, 1);
 
     Info<< "CSMPM coupling: " << returnReduce(P_.size(), sumOp<label>())
         << " particles, "
         << view_.nVertices() << " MPM nodes on the gas lattice, order "
         << stepOrderNames[order_] << ", kernel " << solver_.kernel().type()
-        << ", gas pressure order " << gasOrderNames[gasOrder_] << nl;
+        << ", gas pressure order " << gasOrderNames[gasOrder_];
+    if (maxSubsteps_ > 1)
+    {
+        Info<< ", up to " << maxSubsteps_ << " solid substeps a step";
+    }
+    Info<< nl;
 }
 
 
@@ -552,10 +559,25 @@ Foam::scalar Foam::csmpmStepper::stableDeltaT
 ) const
 {
     const scalar dtGas = gasOnly_->stableDeltaT(U, CFL, speed, limiter);
-    const scalar dtSolid = solver_.deltaT(P_);
+    // (with solidSubsteps, up to that many of the solid's steps, in which
+    // no particle moves further than the gas's CFL allows the flow)
+    const scalar dtWaves = solver_.deltaT(P_);
+    scalar dtSolid = dtWaves;
+    std::string why("solid elastic waves");
+    if (maxSubsteps_ > 1)
+    {
+        const scalar v = solver_.maxSpeed();
+        dtSolid = maxSubsteps_*dtWaves;
+        why += " x " + std::to_string(maxSubsteps_);
+        if (v*dtSolid > CFL*solver_.hMin())
+        {
+            dtSolid = max(dtWaves, CFL*solver_.hMin()/v);
+            why = "solid particle speed";
+        }
+    }
     if (dtSolid < dtGas)
     {
-        limiter = "solid elastic waves";
+        limiter = why;
         return dtSolid;
     }
     return dtGas;
@@ -582,6 +604,15 @@ bool Foam::csmpmStepper::advance
     report& rep
 )
 {
+    // The solid's substeps (solidSubsteps): as many as its elastic waves
+    // need in the gas's step; the first takes the coupled step's impulse
+    label nSub = 1;
+    if (maxSubsteps_ > 1)
+    {
+        nSub = max(label(1), label(std::ceil(dt/solver_.deltaT(P_) - 1e-9)));
+    }
+    const scalar h1 = dt/nSub;
+
     // 1. P2G: nodal masses and v*
     if (audit_.on()) auditMark(-1, U, true);
     auto t0 = stageClock::now();
@@ -595,6 +626,13 @@ bool Foam::csmpmStepper::advance
         // Particles that left through an outlet: their J^g and lambda^g go
         compactRemoved(Jg_);
         compactRemoved(lambdaG_);
+    }
+    if (nSub > 1)
+    {
+        // What a refused later substep goes back to
+        solver_.checkpoint(P_);
+        JgSaved_ = Jg_;
+        lambdaGSaved_ = lambdaG_;
     }
     if (par_.valid())
     {
@@ -636,7 +674,7 @@ bool Foam::csmpmStepper::advance
     t0 = stageClock::now();
     if (order_ == stepOrder::mpmFirst)
     {
-        solver_.gridUpdate(P_, dt);
+        solver_.gridUpdate(P_, h1);
     }
     stageTime_[3] += secondsSince(t0);
 
@@ -651,7 +689,7 @@ bool Foam::csmpmStepper::advance
     t0 = stageClock::now();
     if (order_ == stepOrder::couplingFirst)
     {
-        solver_.gridUpdate(P_, dt);
+        solver_.gridUpdate(P_, h1);
     }
     else
     {
@@ -664,7 +702,7 @@ bool Foam::csmpmStepper::advance
     t0 = stageClock::now();
     forAll(P_.x, p) Vold_[p] = P_.V[p];
     if (par_.valid()) idOld_ = P_.id;
-    const bool moved = solver_.endStep(P_, dt);
+    const bool moved = solver_.endStep(P_, h1);
     if (moved)
     {
         updateJg();
@@ -675,10 +713,18 @@ bool Foam::csmpmStepper::advance
         rep.failure = solver_.failure();
         return false;
     }
+    if (audit_.on()) auditMark(csmpmEnergyAudit::g2p, out, true);
+
+    // The solid's substeps after the first, to the gas's step
+    lastSubsteps_ = 1;
+    if (nSub > 1 && !solidSubsteps(dt, h1, rep))
+    {
+        return false;
+    }
 
     if (audit_.on())
     {
-        auditMark(csmpmEnergyAudit::g2p, out, true);
+        auditMark(csmpmEnergyAudit::solidSubsteps, out, true);
         audit_.accept();
     }
 
@@ -688,12 +734,92 @@ bool Foam::csmpmStepper::advance
     rep.info = "CG residual " + std::to_string(rep.cgResidual)
       + "  solidCells " + std::to_string(lattice_.nSolidCells())
       + "  interfaceFaces " + std::to_string(lattice_.nInterfaceFaces());
+    if (lastSubsteps_ > 1)
+    {
+        rep.info += "  solidSubsteps " + std::to_string(lastSubsteps_);
+    }
+    nSubsteps_ += lastSubsteps_;
     if (lastRepaired_)
     {
         nRepaired_ += lastRepaired_;
         rep.info += "  repairedCells " + std::to_string(lastRepaired_);
     }
     return true;
+}
+
+
+bool Foam::csmpmStepper::solidSubsteps
+(
+    scalar dt,
+    scalar done,
+    report& rep
+)
+{
+    // Equal substeps over what is left of dt, each within the elastic-wave
+    // step of the state it starts from (a bound on their number: a state
+    // whose waves sped up that much is refused, and the gas step halved)
+    label n = 1;
+    const label most = 4*maxSubsteps_;
+    while (done < dt*(1 - 1e-12))
+    {
+        const scalar left = dt - done;
+        const scalar m = std::ceil(left/solver_.deltaT(P_) - 1e-9);
+        if (n + m > most)
+        {
+            rep.failure = "the solid's elastic waves would need more than "
+                + std::to_string(most) + " substeps (4 x solidSubsteps)";
+            rollbackSubsteps();
+            return false;
+        }
+        const scalar h = left/max(m, scalar(1));
+
+        auto t0 = stageClock::now();
+        bool ok = solver_.beginStep(P_);
+        if (ok && solver_.removed().size())
+        {
+            compactRemoved(Jg_);
+            compactRemoved(lambdaG_);
+        }
+        stageTime_[0] += secondsSince(t0);
+        if (ok)
+        {
+            t0 = stageClock::now();
+            solver_.gridUpdate(P_, h);
+            stageTime_[3] += secondsSince(t0);
+
+            t0 = stageClock::now();
+            if (Vold_.size() < P_.size()) Vold_.setSize(P_.size());
+            forAll(P_.x, p) Vold_[p] = P_.V[p];
+            if (par_.valid()) idOld_ = P_.id;
+            ok = solver_.endStep(P_, h);
+            if (ok) updateJg();
+            stageTime_[4] += secondsSince(t0);
+        }
+        if (!ok)
+        {
+            rep.failure = std::string(solver_.failure())
+                + " (solid substep " + std::to_string(n + 1) + ")";
+            rollbackSubsteps();
+            return false;
+        }
+        done += h;
+        ++n;
+    }
+    lastSubsteps_ = n;
+    solver_.substepsDone();
+    return true;
+}
+
+
+void Foam::csmpmStepper::rollbackSubsteps()
+{
+    solver_.rollback(P_);
+    Jg_ = JgSaved_;
+    lambdaG_ = lambdaGSaved_;
+    const label nP = P_.size();
+    if (pg_.size() < nP) pg_.setSize(nP);
+    if (Kg_.size() < nP) Kg_.setSize(nP);
+    if (Vold_.size() < nP) Vold_.setSize(nP);
 }
 
 
@@ -877,6 +1003,13 @@ void Foam::csmpmStepper::summary() const
         << scalar(cgTotal_)/max(nSteps_, label(1)) << ", max " << cgMax_
         << ", gas cells next to the solid repaired (pooled with a"
         << " neighbour) " << nRepaired_ << nl;
+    if (maxSubsteps_ > 1)
+    {
+        Info<< "CSMPM solid substeps: " << nSubsteps_ << " in "
+            << nSteps_ << " coupled steps (mean "
+            << scalar(nSubsteps_)/max(nSteps_, label(1))
+            << ", solidSubsteps " << maxSubsteps_ << ")" << nl;
+    }
     if (par_.valid())
     {
         Info<< "CSMPM parallel: particles moved to another rank "

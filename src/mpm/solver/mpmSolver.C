@@ -211,6 +211,7 @@ Foam::mpmSolver::mpmSolver
     particleSteps_(0),
     departed_{0, Zero, Zero, 0, 0, 0},
     departedStep_(0),
+    departedCount_(0),
     wallMomentum_(Zero),
     wallMomentumStep_(Zero),
     contact_(nullptr),
@@ -621,6 +622,7 @@ bool Foam::mpmSolver::beginStep(mpmParticles& P)
     }
     departedStep_ = nLeaving;
     if (par_) reduce(departedStep_, sumOp<label>());
+    departedCount_ += departedStep_;
     if (nLeaving) removeDeparted(P);
 
     // Weights, active vertices
@@ -999,6 +1001,47 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
     wallMomentum_ += wallMomentumStep_;
     time_ += dt;
     return true;
+}
+
+
+void Foam::mpmSolver::checkpoint(const mpmParticles& P)
+{
+    saved_.P = P;
+    saved_.materialStart = materialStart_;
+    saved_.treatedTotal = treatedTotal_;
+    saved_.particleSteps = particleSteps_;
+    saved_.time = time_;
+    saved_.wallMomentum = wallMomentum_;
+    saved_.departed = departed_;
+    saved_.contactDtNext = contactDtNext_;
+    saved_.departedBefore = departedCount_ - departedStep_;
+    saved_.departedCount = departedCount_;
+}
+
+
+void Foam::mpmSolver::rollback(mpmParticles& P)
+{
+    P = saved_.P;
+    materialStart_ = saved_.materialStart;
+    treatedTotal_ = saved_.treatedTotal;
+    particleSteps_ = saved_.particleSteps;
+    time_ = saved_.time;
+    wallMomentum_ = saved_.wallMomentum;
+    departed_ = saved_.departed;
+    contactDtNext_ = saved_.contactDtNext;
+    departedCount_ = saved_.departedCount;
+    // (cells as at the checkpoint: the next beginStep locates again)
+    located_ = false;
+    leaving_.clear();
+    removed_.clear();
+    if (contact_) contact_->invalidate();
+}
+
+
+void Foam::mpmSolver::substepsDone()
+{
+    treatedStep_ = label(treatedTotal_ - saved_.treatedTotal);
+    departedStep_ = label(departedCount_ - saved_.departedBefore);
 }
 
 

@@ -2,7 +2,7 @@
 """Write the 2D bullet case (dissertation 3.3.2, Fig. 3.12) into directory
 D: python3 makeCase.py D [n=80] [tEnd=0.8] [write=0.01] [rhoS=100]
 [E=1e6] [nu=0.25] [pC=50] [rhoC=7] [pA=1] [silencer=0] [corner=none]
-[gap=0]
+[gap=0] [substeps=1]
 
 A gun: the barrel is the channel x in [0, 1], y in [0.4, 0.6] (walls:
 the breech at x = 0 and the bore, patch 'barrel'; the gun's front face at
@@ -17,7 +17,9 @@ rhoS (the heavy bullet 100, the light one 40: the dissertation's 1250 and
 500 in the ratio 2.5), neoHookean E 1e6 (Table 3.1's), nu 0.25 (strains
 of 5e-5 under the chamber pressure), sliding on the bore (MPM slip on
 'barrel').  'gap' narrows the bullet by that much on each side (windage;
-0: it fills the bore); 'corner' is the gas solver's cornerTreatment.
+0: it fills the bore); 'corner' is the gas solver's cornerTreatment;
+'substeps' the coupling's solidSubsteps (the most solid substeps in one
+gas step; 1: the bullet's elastic waves set the step).
 
 silencer=1 puts Fig. 3.12's silencer on the muzzle: a can x in [1, 1.4],
 y in [0.3, 0.7] (patch 'silencer', gas walls; free for the MPM grid:
@@ -33,7 +35,8 @@ outlet.
 """
 import os, sys
 a = dict(n=80, tEnd=0.8, write=0.01, rhoS=100.0, E=1.0e6, nu=0.25,
-         pC=50.0, rhoC=7.0, pA=1.0, silencer=0, corner='none', gap=0.0)
+         pC=50.0, rhoC=7.0, pA=1.0, silencer=0, corner='none', gap=0.0,
+         substeps=1)
 d = sys.argv[1]
 for kv in sys.argv[2:]:
     k, v = kv.split('=')
@@ -169,7 +172,8 @@ w('system/shockMpmDict', 'dictionary', 'shockMpmDict', f'''
 gas {{ stepper semiImplicit; scheme WENO5; timeIntegration RK3; CFL 0.5;
     cornerTreatment {a["corner"]}; }}
 boundaries {{ open {{ type outlet; }} }}
-coupling {{ order couplingFirst; ghostInit ambient; }}
+coupling {{ order couplingFirst; ghostInit ambient;
+    solidSubsteps {int(a["substeps"])}; }}
 ''')
 w('constant/thermophysicalProperties', 'dictionary',
   'thermophysicalProperties', 'gamma 1.4; R 1;\n')

@@ -2,6 +2,7 @@
 """Write the posts-in-Mach-3 case (dissertation 3.3.2, Fig. 3.15, in 2D)
 into directory D: python3 makeCase.py D [n=80] [tEnd=0.6] [write=0.02]
 [material=neoHookean] [rhoS=20] [E=2e4] [nu=0.35] [yield=800] [M=3]
+[substeps=1]
 
 A channel [0, 1.5] x [0, 0.5] (n cells per unit length, square), walls at
 the bottom and top, inlet on the left, outlet on the right; gas rho 1.4,
@@ -14,11 +15,13 @@ width 1/16 and height 0.25 (the cylinder of Fig. 3.15 seen from its side)
 stands on the floor at x = 0.4, clamped there (MPM 'fixed' on the floor
 vertices under it), 2 x 2 particles per cell; material neoHookean
 (elastic) or henckyJ2 (von Mises plasticity, perfectly plastic at the
-yield stress 'yield').
+yield stress 'yield').  'substeps' is the coupling's solidSubsteps (the
+most solid substeps in one gas step; 1: the post's elastic waves set the
+step).
 """
 import os, sys
 a = dict(n=80, tEnd=0.6, write=0.02, material='neoHookean', rhoS=20.0,
-         E=2.0e4, nu=0.35, M=3.0, **{'yield': 800.0})
+         E=2.0e4, nu=0.35, M=3.0, substeps=1, **{'yield': 800.0})
 d = sys.argv[1]
 for kv in sys.argv[2:]:
     k, v = kv.split('=')
@@ -61,10 +64,11 @@ divSchemes { default none; } laplacianSchemes { default none; }
 interpolationSchemes { default linear; } snGradSchemes { default corrected; }
 ''')
 w('system/fvSolution', 'dictionary', 'fvSolution', '\n')
-w('system/shockMpmDict', 'dictionary', 'shockMpmDict', '''
-gas { stepper semiImplicit; scheme WENO5; timeIntegration RK3; CFL 0.5; }
-boundaries { inlet { type inlet; } outlet { type outlet; } }
-coupling { order couplingFirst; ghostInit ambient; }
+w('system/shockMpmDict', 'dictionary', 'shockMpmDict', f'''
+gas {{ stepper semiImplicit; scheme WENO5; timeIntegration RK3; CFL 0.5; }}
+boundaries {{ inlet {{ type inlet; }} outlet {{ type outlet; }} }}
+coupling {{ order couplingFirst; ghostInit ambient;
+    solidSubsteps {int(a["substeps"])}; }}
 ''')
 w('constant/thermophysicalProperties', 'dictionary',
   'thermophysicalProperties', 'gamma 1.4; R 1;\n')
