@@ -517,7 +517,7 @@ void Foam::gasDynamics::step(Time& runTime)
 void Foam::gasDynamics::summary() const
 {
     Info<< nl << "Gas solver summary: " << nSteps_ << " steps, "
-        << view_.nCells() << " cells, " << nSteps_*view_.nCells()
+        << view_.nCells() << " cells, " << scalar(nSteps_)*view_.nCells()
         << " cell updates";
     if (cgTotal_ > 0)
     {
