@@ -6,6 +6,7 @@
 #include "csmpmStepper.H"
 #include "PstreamReduceOps.H"
 #include <unordered_map>
+#include <unordered_set>
 #include <algorithm>
 #include <cmath>
 
@@ -13,6 +14,63 @@
 
 namespace
 {
+
+// For a covered cell i no face neighbour of which is more open (inside a
+// solid: the root of a post clamped to a wall, where the covered cells
+// reach the wall), the open cell (open fraction at least theta) that takes
+// what its gas does not hold: of those within two face steps beyond the
+// nearest (paths through covered cells), the one holding the most gas, so
+// that the ghost pressure's work on the trapped gas is not all put into a
+// near-vacuum behind the solid; ties to the first found in the scan order
+// of nbr, so that a serial run and the union of a parallel one agree; -1 if
+// none within maxDepth steps.  Without it the trapped gas keeps that work
+// until the steps drain it to a vacuum (cylindersMach3 at 296 per unit
+// length)
+template<class Nbr, class Open>
+Foam::label nearestOpen
+(
+    const Foam::label i,
+    const Foam::cartesianMesh& mesh,
+    const Nbr& nbr,
+    const Open& open,
+    const double theta,
+    const Foam::gasState& U
+)
+{
+    using namespace Foam;
+    const label maxDepth = 64, beyond = 2;
+    std::vector<label> front{i}, next;
+    std::unordered_set<label> seen{i};
+    label best = -1, lastDepth = maxDepth;
+    for (label depth = 1; depth <= lastDepth && !front.empty(); ++depth)
+    {
+        next.clear();
+        for (const label u : front)
+        {
+            for (label d = 0; d < 3; ++d)
+            {
+                if (!mesh.active(d)) continue;
+                for (label h = 0; h < 2; ++h)
+                {
+                    const label j = nbr(u, d, h);
+                    if (j < 0 || !seen.insert(j).second) continue;
+                    if (open(j) < theta)
+                    {
+                        next.push_back(j);
+                    }
+                    else if (best < 0 || U.q[0][j] > U.q[0][best])
+                    {
+                        if (best < 0) lastDepth = min(depth + beyond, maxDepth);
+                        best = j;
+                    }
+                }
+            }
+        }
+        front.swap(next);
+    }
+    return best;
+}
+
 
 // The rules of mergeCoveredCells and repairNearSolid on the cells of U,
 // visited in the order of 'cells'; nbr(u, d, h) is u's face neighbour along
@@ -54,7 +112,12 @@ void mergeCovered
                 }
             }
         }
-        if (best < 0) continue;
+        if (best < 0)
+        {
+            best = nearestOpen(i, mesh, nbr, open, theta, U);
+            if (best < 0) continue;
+            oBest = open(best);
+        }
         const double r = o/oBest;
         for (int c = 0; c < 5; ++c)
         {
@@ -140,7 +203,9 @@ Foam::label repairNear
 // A cell the solid mostly covers (open fraction o < 1/2) keeps only the gas
 // its open volume holds at the state of its most open neighbour (o_n > o):
 // content o/o_n times the neighbour's; the rest of its mass, momentum and
-// energy (or the deficit) goes to that neighbour.  Conservative, and
+// energy (or the deficit) goes to that neighbour; a covered cell no
+// neighbour of which is more open (inside a solid) does the same with the
+// nearest cell that is at least half open (nearestOpen).  Conservative, and
 // positive (the neighbour keeps (1 - o/o_n) of its content plus the cell's),
 // so that the few gas a covered cell holds cannot be driven to a negative
 // pressure by the pressure work around it

@@ -66,13 +66,7 @@ void Foam::csmpmStepper::couplingFaces()
             coupledFaces_[d].push_back(slot);
         }
     }
-    if (label(phiCell_.size()) != mesh_.nLattice())
-    {
-        phiCell_.assign(mesh_.nLattice(), 0.0);
-    }
-    for (const label i : phiCells_) phiCell_[i] = 0;
-    phiCells_ = lattice_.touchedCells();
-    for (const label i : phiCells_) phiCell_[i] = lattice_.phi(i);
+    setSolidFractions();
 }
 
 

@@ -91,8 +91,21 @@ Foam::scalar Foam::gasSteppers::semiImplicitStepper::stableDeltaT
     };
 
     // Parallel: the neighbour ranks' cells next to processor faces
-    std::vector<double> gU;
-    if (Pstream::parRun()) mesh_.exchangeGhosts(U.q, 1, gU);
+    std::vector<double> gU, gOpen;
+    if (Pstream::parRun())
+    {
+        mesh_.exchangeGhosts(U.q, 1, gU);
+        if (open_)
+        {
+            // the open fraction of the cell across each processor face
+            std::vector<double> mine(gU.size()/5);
+            for (size_t j = 0; j < mine.size(); ++j)
+            {
+                mine[j] = (*open_)[mesh_.slotCell(label(j))];
+            }
+            mesh_.exchangeSlots(mine, gOpen);
+        }
+    }
     auto ghostPressure = [&](label slot)
     {
         const double* q = gU.data() + 5*slot;
@@ -125,6 +138,8 @@ Foam::scalar Foam::gasSteppers::semiImplicitStepper::stableDeltaT
                 && mesh_.lowFaceOf(d)[i] + 1 == mesh_.lowFaceOf(d)[hi];
             double pLo = hasLo ? pressure(lo) : 0;
             double pHi = hasHi ? pressure(hi) : 0;
+            double oLo = (open_ && hasLo) ? (*open_)[lo] : 1;
+            double oHi = (open_ && hasHi) ? (*open_)[hi] : 1;
             if (Pstream::parRun() && !(hasLo && hasHi))
             {
                 const cartesianMesh::segment& sg =
@@ -133,6 +148,7 @@ Foam::scalar Foam::gasSteppers::semiImplicitStepper::stableDeltaT
                 {
                     hasLo = true;
                     pLo = ghostPressure(sg.lowGhost);
+                    if (open_) oLo = gOpen[sg.lowGhost];
                 }
                 if
                 (
@@ -142,10 +158,20 @@ Foam::scalar Foam::gasSteppers::semiImplicitStepper::stableDeltaT
                 {
                     hasHi = true;
                     pHi = ghostPressure(sg.highGhost);
+                    if (open_) oHi = gOpen[sg.highGhost];
                 }
             }
             double dp = 0;
-            if (hasLo && hasHi) dp = 0.5*(pHi - pLo);
+            if (open_)
+            {
+                // each face's difference by its smaller open fraction
+                const double oi = (*open_)[i];
+                const double pi = pressure(i);
+                const double dHi = hasHi ? min(oi, oHi)*(pHi - pi) : 0;
+                const double dLo = hasLo ? min(oi, oLo)*(pi - pLo) : 0;
+                dp = (hasLo && hasHi) ? 0.5*(dHi + dLo) : dHi + dLo;
+            }
+            else if (hasLo && hasHi) dp = 0.5*(pHi - pLo);
             else if (hasHi) dp = pHi - pressure(i);
             else if (hasLo) dp = pressure(i) - pLo;
             rp += std::abs(dp)/(rho*mesh_.dx(d)*mesh_.dx(d));
