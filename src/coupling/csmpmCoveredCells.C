@@ -204,8 +204,9 @@ Foam::label repairNear
 // its open volume holds at the state of its most open neighbour (o_n > o):
 // content o/o_n times the neighbour's; the rest of its mass, momentum and
 // energy (or the deficit) goes to that neighbour; a covered cell no
-// neighbour of which is more open (inside a solid) does the same with the
-// nearest cell that is at least half open (nearestOpen).  Conservative, and
+// neighbour of which is more open (inside a solid) does the same with an
+// open cell outside the solid, the fullest near it (nearestOpen).
+// Conservative, and
 // positive (the neighbour keeps (1 - o/o_n) of its content plus the cell's),
 // so that the few gas a covered cell holds cannot be driven to a negative
 // pressure by the pressure work around it
