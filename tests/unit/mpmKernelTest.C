@@ -6,6 +6,7 @@
 #include "testMeshes.H"
 #include "mpmKernel.H"
 #include "IStringStream.H"
+#include "boundBox.H"
 
 #include <gtest/gtest.h>
 #include <map>
@@ -358,6 +359,56 @@ TEST(mpmMeshView, findCellWalks)
     for (const vector& x : samples(3, 0.01, 3.99, 100, 4))
     {
         EXPECT_GE(t->findCell(x, 0), 0);
+    }
+}
+
+
+// The capabilities the solver reads (mpmKernel::invertibleMoments, used to
+// admit APIC) match the weights: D_p = sum w (x_v - x)(x_v - x)^T (2.36) at
+// a particle on an interior vertex is singular for linear (all weight on
+// that vertex) and well conditioned for the MLS kernels
+TEST(mpmKernels, capabilitiesMatchWeights)
+{
+    std::vector<std::unique_ptr<mpmMeshView>> meshes;
+    meshes.push_back(testMeshes::plane(8, false, 0.25));
+    meshes.push_back(testMeshes::box(5, true, 0.15));
+    for (const auto& m : meshes)
+    {
+        // An interior vertex near the middle
+        const boundBox bb(m->vertices());
+        label v = -1;
+        scalar best = GREAT;
+        forAll(m->vertices(), i)
+        {
+            const scalar d = mag(m->vertices()[i] - bb.centre());
+            if (!m->boundaryVertex(i) && d < best) { best = d; v = i; }
+        }
+        ASSERT_GE(v, 0);
+        const scalar h = m->vertexSize()[v];
+        const vector x = m->vertices()[v] + 1e-9*h*vector(1, 1, m->dim() > 2 ? 1 : 0);
+        for (const char* kn : {"linear", "mlsRing", "umls"})
+        {
+            auto k = kernel(kn, *m);
+            const weightsAt r = evaluate(*k, x);
+            tensor D(Zero);
+            for (const auto& e : r.wv)
+            {
+                const vector d = m->vertices()[e.first] - x;
+                D += e.second.first*(d*d);
+            }
+            // det of D over the solution axes, relative to h^(2 dim)
+            scalar det = m->dim() == 2
+                ? D.xx()*D.yy() - D.xy()*D.yx()
+                : Foam::det(D);
+            det /= std::pow(h, 2*m->dim());
+            std::cout << "  " << m->dim() << "D, " << kn << ": det D_p / h^"
+                << 2*m->dim() << " = " << det << std::endl;
+            EXPECT_EQ(det > 1e-4, k->invertibleMoments()) << kn << " det " << det;
+        }
+        EXPECT_TRUE(kernel("linear", *m)->vanishingVertexMass());
+        EXPECT_FALSE(kernel("umls", *m)->vanishingVertexMass());
+        EXPECT_TRUE(kernel("linear", *m)->nonNegativeAtBoundary());
+        EXPECT_FALSE(kernel("umls", *m)->nonNegativeAtBoundary());
     }
 }
 

@@ -29,14 +29,14 @@ void Foam::mpmSolver::readSettings(const dictionary& dict)
     maxDeltaT_ = getPositive(dict, "maxDeltaT", 1e30);
     maxSteps_ = getInRange(dict, "maxSteps", 1e9, 0, 1e15);
 
-    // USL by default (Algorithm 1); MUSL for the linear kernel, whose
-    // vertices at a free surface can hold a vanishing mass
-    const word kernelName(dict.get<word>("kernel"));
+    // USL by default (Algorithm 1); MUSL for a kernel whose vertices at a
+    // free surface can hold a vanishing mass (linear)
     const word scheme
     (
         getAsOrDefault<word>
         (
-            dict, "updateScheme", kernelName == "linear" ? "MUSL" : "USL",
+            dict, "updateScheme",
+            kernel_->vanishingVertexMass() ? "MUSL" : "USL",
             "USL or MUSL"
         )
     );
@@ -224,6 +224,18 @@ Foam::mpmSolver::mpmSolver
     energyGrowthBound_(0)
 {
     readSettings(dict);
+    if (transfer_->affine() && !kernel_->invertibleMoments())
+    {
+        dictionaryChecks::badEntry
+        (
+            dict, "transfer",
+            word(transfer_->type()) + " (with kernel " + kernel_->type() + ")",
+            "PIC or FLIP with kernel " + kernel_->type() + "; APIC needs an"
+            " invertible second moment D_p of the weights (2.36), which the "
+            + kernel_->type() + " kernel lacks (use kernel umls or mlsRing"
+            " for APIC)"
+        );
+    }
     forAll(materials_, k)
     {
         if (materials_[k].Fbar()) anyFbar_ = true;
@@ -391,13 +403,8 @@ void Foam::mpmSolver::initialise(mpmParticles& P)
     energyGrowthBound_ = kinetic + strain + release;
 
     // Particles in cells touching the mesh boundary have one-sided 1-rings:
-    // MLS weights can turn negative there (Fig. 2.6).  (bspline2 folds the
-    // stencil at the boundary: its weights stay exact and non-negative.)
-    if
-    (
-        word(kernel_->type()) != "linear"
-     && word(kernel_->type()) != "bspline2"
-    )
+    // MLS weights can turn negative there (Fig. 2.6)
+    if (!kernel_->nonNegativeAtBoundary())
     {
         const labelList& cv = mesh_.cellVertices();
         label nOneSided = 0;

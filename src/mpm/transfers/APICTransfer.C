@@ -5,7 +5,6 @@
 
 #include "APICTransfer.H"
 #include "addToRunTimeSelectionTable.H"
-#include "dictionaryChecks.H"
 
 namespace Foam
 {
@@ -21,18 +20,7 @@ Foam::APICTransfer::APICTransfer
 )
 :
     mpmTransfer(dict, mesh)
-{
-    if (dict.getOrDefault<word>("kernel", word::null) == "linear")
-    {
-        dictionaryChecks::badEntry
-        (
-            dict, "transfer", "APIC (with kernel linear)",
-            "PIC or FLIP with kernel linear; APIC needs an invertible second"
-            " moment D_p of the weights, which the linear kernel lacks at"
-            " vertices (use kernel umls or mlsRing for APIC)"
-        );
-    }
-}
+{}
 
 
 // The offset x_c - x_p of the weights' centre x_c = sum_i w_ip x_i from the
