@@ -6,6 +6,8 @@
 #include "mlsRingKernel.H"
 #include "addToRunTimeSelectionTable.H"
 #include "dictionaryChecks.H"
+#include "Pstream.H"
+#include "PstreamReduceOps.H"
 
 namespace Foam
 {
@@ -18,12 +20,36 @@ namespace
 {
 using namespace Foam;
 
-enum class supportSize { mean, maxEdge };
+enum class supportSize { mean, maxEdge, graded };
 const Enum<supportSize> supportSizeNames
 ({
     { supportSize::mean, "mean" },
     { supportSize::maxEdge, "maxEdge" },
+    { supportSize::graded, "graded" },
 });
+
+// h_v of every vertex: its own edges (mean or longest), or the graded
+// sizing field over the longest edges (chapter 5: supports that follow
+// the mesh's sizes smoothly, never narrower than a vertex's own need)
+scalarList supportSizes(const dictionary& dict, const mpmMeshView& mesh)
+{
+    const supportSize s = dictionaryChecks::getEnum
+    (
+        dict, "supportSize", supportSizeNames, supportSize::maxEdge
+    );
+    if (s == supportSize::mean) return mesh.vertexSize();
+    if (s == supportSize::maxEdge) return mesh.vertexMaxEdge();
+
+    const scalar g =
+        dictionaryChecks::getInRange(dict, "supportGradient", 0.25, 0, 1);
+    scalarList h(mesh.gradedSize(mesh.vertexMaxEdge(), g));
+    scalar raised = 1;
+    forAll(h, v) raised = max(raised, h[v]/mesh.vertexMaxEdge()[v]);
+    Info<< "MLS supports: graded sizing field, gradient " << g
+        << ": h_v up to " << returnReduce(raised, maxOp<scalar>())
+        << " times the vertex's longest edge" << endl;
+    return h;
+}
 
 // Closed-form inverse of the symmetric 3 x 3 moment matrix (2D); returns
 // |det| relative to the product of the diagonal (0: singular)
@@ -325,14 +351,7 @@ Foam::mlsRingKernel::mlsRingKernel
 :
     mpmKernel(dict, mesh),
     diminish_(diminish),
-    h_
-    (
-        dictionaryChecks::getEnum
-        (
-            dict, "supportSize", supportSizeNames, supportSize::maxEdge
-        ) == supportSize::mean
-      ? mesh.vertexSize() : mesh.vertexMaxEdge()
-    ),
+    h_(supportSizes(dict, mesh)),
     support2_(h_.size()),
     rings_(mesh),
     sampleVertex_(rings_.maxSize),

@@ -119,6 +119,7 @@ Foam::mpmParallel::mpmParallel(const polyMesh& mesh)
     List<bool> boundary(nV);
     forAll(bnd, i) boundary[i] = bnd[i] > 0.5;
     view_->setVertexData(h, hMax, boundary);
+    view_->setSharedMax([this](UList<scalar>& f) { maxShared(f); });
 
     Info<< "MPM parallel grid on " << Pstream::nProcs() << " ranks: per rank"
         << " (largest) " << returnReduce(nOwnedCells_, maxOp<label>())
