@@ -147,6 +147,7 @@ TEST(gradedSize, badEntriesAreFatalIOErrors)
         {"supportSize graded; supportGradient 2;", "'supportGradient'", "<= 1"},
         {"supportSize graded; supportGradient nan;", "'supportGradient'", "finite"},
         {"supportSize smooth;", "'supportSize'", "graded"},
+        {"supportSize graded; gradedFrom graded;", "'gradedFrom'", "maxEdge"},
     };
     FatalIOError.throwExceptions();
     for (const auto& b : bad)

@@ -28,6 +28,13 @@ const Enum<supportSize> supportSizeNames
     { supportSize::graded, "graded" },
 });
 
+// The vertex sizes a graded sizing field starts from
+const Enum<supportSize> gradedFromNames
+({
+    { supportSize::mean, "mean" },
+    { supportSize::maxEdge, "maxEdge" },
+});
+
 // h_v of every vertex: its own edges (mean or longest), or the graded
 // sizing field over the longest edges (chapter 5: supports that follow
 // the mesh's sizes smoothly, never narrower than a vertex's own need)
@@ -42,12 +49,19 @@ scalarList supportSizes(const dictionary& dict, const mpmMeshView& mesh)
 
     const scalar g =
         dictionaryChecks::getInRange(dict, "supportGradient", 0.25, 0, 1);
-    scalarList h(mesh.gradedSize(mesh.vertexMaxEdge(), g));
+    const bool fromMean = dictionaryChecks::getEnum
+    (
+        dict, "gradedFrom", gradedFromNames, supportSize::maxEdge
+    ) == supportSize::mean;
+    const scalarList& need =
+        fromMean ? mesh.vertexSize() : mesh.vertexMaxEdge();
+    scalarList h(mesh.gradedSize(need, g));
     scalar raised = 1;
-    forAll(h, v) raised = max(raised, h[v]/mesh.vertexMaxEdge()[v]);
-    Info<< "MLS supports: graded sizing field, gradient " << g
+    forAll(h, v) raised = max(raised, h[v]/need[v]);
+    Info<< "MLS supports: graded sizing field over the vertices' "
+        << (fromMean ? "mean" : "longest") << " edges, gradient " << g
         << ": h_v up to " << returnReduce(raised, maxOp<scalar>())
-        << " times the vertex's longest edge" << endl;
+        << " times the vertex's own" << endl;
     return h;
 }
 

@@ -18,7 +18,8 @@ kernel umls: a gmsh tetrahedral mesh (slopeFailure3D.geo, run gmsh +
 gmshToFoam yourself: see Allrun): structured=1 the cubes h cut into 6
 tetrahedra each (the vertices of the bspline2 mesh), structured=0 gmsh's
 unstructured tetrahedra of size tet*h; support: the umls kernel's
-supportSize (mean or maxEdge edge of the vertex).  kernel bspline2: a
+supportSize (mean or maxEdge edge of the vertex, or graded: the sizing
+field over the longest edges).  kernel bspline2: a
 blockMesh of cubes h.  Particles on a lattice of spacing h/2, the same in both:
 particle columns of width h/2 up to the slope's surface at their centre.
 """
@@ -93,7 +94,7 @@ divSchemes { default none; } laplacianSchemes { default none; }
 interpolationSchemes { default linear; } snGradSchemes { default none; }
 ''')
 w('system/fvSolution', 'fvSolution', '\n')
-support = ('\nsupportSize ' + a['support'] + ';  // h_v of the umls kernel: the mean edge at the vertex'
+support = ('\nsupportSize ' + a['support'] + ';  // h_v of the umls kernel: mean, maxEdge or graded'
            if a['kernel'] == 'umls' else '')
 w('constant/mpmProperties', 'mpmProperties', f'''
 kernel      {a["kernel"]};{support}
