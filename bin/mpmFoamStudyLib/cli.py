@@ -13,7 +13,7 @@ import sys
 import time
 
 from . import front as fr
-from . import report, runner
+from . import convergence, report, runner
 from .eta import Estimator
 from .foamDict import DictError
 from .studyDict import Study
@@ -273,10 +273,22 @@ def main(argv, doc):
     except ImportError as e:
         print("mpmFoamStudy: no plot (%s)" % e, file=sys.stderr)
         png = None
+    written = "results.csv, results.md" + (", errorVsCost.png" if png else "")
+    orderLines = []
+    if study.convergence is not None:
+        orderLines = convergence.write(study, results, studyDir)
+        written += ", convergence.csv, convergence.md"
+        try:
+            convergence.plot(study, results,
+                             os.path.join(studyDir, "errorVsSize.png"))
+            written += ", errorVsSize.png"
+        except ImportError as e:
+            print("mpmFoamStudy: no plot (%s)" % e, file=sys.stderr)
     print()
     for line in report.summaryLines(study, results, targets, axis):
         print(line)
-    print("wrote %s/results.csv, results.md%s" % (
-        studyDir, ", errorVsCost.png" if png else ""))
+    for line in orderLines:
+        print(line)
+    print("wrote %s/%s" % (studyDir, written))
     nOk = sum(1 for r in results if r.get("status") == "ok")
     return 0 if nOk else 1

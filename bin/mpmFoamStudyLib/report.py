@@ -240,8 +240,12 @@ def plot(study, results, targets, axis, path):
     for k, v in enumerate(mvals):
         ax.plot([], [], markers[k % len(markers)], color="grey",
                 label="%s %s" % (markerBy, v))
-    ax.set_xscale("log")
-    ax.set_yscale("log")
+    if ok:
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+    else:
+        ax.text(0.5, 0.5, "no point finished with a positive error",
+                ha="center", transform=ax.transAxes)
     ax.set_xlabel(axisText(study))
     ax.set_ylabel(study.error.name)
     nf = sum(1 for r in results if r.get("status") == "failed")

@@ -10,6 +10,7 @@ import itertools
 import os
 import re
 
+from .convergence import ConvergenceSpec
 from .foamDict import (DictError, asNumber, entryExists,
                        parentExists, readStudyDict, toLabel, toText)
 
@@ -244,6 +245,8 @@ class Study:
             raise DictError("colourBy: '%s' is not a setting (settings: %s)"
                             % (toText(self.colourBy), " ".join(self.byName)))
         self._points(d)
+        self.convergence = (ConvergenceSpec(d["convergence"], self)
+                            if "convergence" in d else None)
         if self.error.type == "finest":
             sel = self.error.finest
             if sel is not None:

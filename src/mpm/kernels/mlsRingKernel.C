@@ -28,6 +28,18 @@ const Enum<supportSize> supportSizeNames
     { supportSize::graded, "graded" },
 });
 
+// The weights' gradient: the slope of the fit (2.22), the derivative of
+// the weights with eta held at its value (continuous across faces), or
+// their whole derivative (eta's gradient jumps across faces)
+// (the order is gradient_'s: 0, 1, 2)
+enum class gradientKind { fit, heldEta, derivative };
+const Enum<gradientKind> gradientNames
+({
+    { gradientKind::fit, "fit" },
+    { gradientKind::heldEta, "heldEta" },
+    { gradientKind::derivative, "derivative" },
+});
+
 // The vertex sizes a graded sizing field starts from
 const Enum<supportSize> gradedFromNames
 ({
@@ -202,6 +214,47 @@ const unsigned hexCellMask[8] =
 };
 
 
+// The derivative of w_vp = d_vp (M^-1 [1, P_v])_0 in x_p with eta held,
+// P_v = x_v - x_p: d/dx_a of d_v, of M (through d_u and P_u) and of P_v
+// give, after sum_u d_u P_u = M e_0 cancels two of the terms,
+//     dw_v/dx_a = d_v q_v,a+1 + dd_v,a alpha_v - d_v T_a . q_v
+// with q_v = M^-1 [1, P_v], alpha_v = q_v,0 and
+//     T_a = sum_u dd_u,a alpha_u [1, P_u], dd_u = grad_xp d_u.
+// The first term is the fit's slope (2.22); the others make the gradient
+// the weights' own, so that sum_p V_p grad w_vp integrates to the
+// boundary on any mesh (the fit's slope does only where the ring is
+// symmetric: on irregular meshes the bar's frequency then stays off by
+// ~0.5 % however fine the mesh).  Holding eta keeps the gradient
+// continuous where particles cross faces; the identities hold for any
+// fixed sample weights, so they hold for it.
+template<int D>
+inline void derivativeTerms
+(
+    const label ns,
+    const scalar* __restrict__ dd,
+    const scalar* __restrict__ dx,
+    const scalar Minv[4][4],
+    scalar T[D][D + 1]
+)
+{
+    constexpr label n = D + 1;
+    for (label a = 0; a < D; ++a)
+        for (label i = 0; i < n; ++i) T[a][i] = 0;
+    for (label s = 0; s < ns; ++s)
+    {
+        const scalar* P = dx + D*s;
+        scalar alpha = Minv[0][0];
+        for (label j = 0; j < D; ++j) alpha += Minv[0][j + 1]*P[j];
+        for (label a = 0; a < D; ++a)
+        {
+            const scalar c = dd[D*s + a]*alpha;
+            T[a][0] += c;
+            for (label j = 0; j < D; ++j) T[a][j + 1] += c*P[j];
+        }
+    }
+}
+
+
 // Moment matrix M = sum_s d_s P_s P_s^T, P_s = [1, x_v - x_p] (dx: D per
 // sample), summed over the samples in order
 template<int D>
@@ -258,6 +311,10 @@ struct ringSamples
     label* __restrict__ sv;
     scalar* __restrict__ sd;
     scalar* __restrict__ sx;
+    //- Where not null: grad_xp d_s (D per sample), with eta held or, where
+    //  gradB is not null, with eta's own gradient
+    scalar* __restrict__ sdd;
+    const vector* gradB;
 
     // (2.29) eta_vp = sum_{n in N0} B_np A_vn, the set bits of the mask
     // visited lowest first (the sums of a scan over the cell's vertices);
@@ -341,9 +398,33 @@ struct ringSamples
                 }
                 e = max(e, scalar(0));
             }
-            const scalar ds = e*Foam::mlsRingKernel::bSpline(std::sqrt(r2)/hv[v]);
+            const scalar r = std::sqrt(r2);
+            const scalar ds = e*Foam::mlsRingKernel::bSpline(r/hv[v]);
             if (ds == 0) continue;
 
+            if (sdd)
+            {
+                // e grad N = -e N'(r/h)/(h r) P: 2e/h^2 inside r < h/2,
+                // finite at r = 0
+                const scalar rho = r/hv[v];
+                const scalar c = rho < 0.5
+                    ? 2*e/(hv[v]*hv[v])
+                    : e*(1.5 - rho)/(hv[v]*r);
+                for (label a = 0; a < D; ++a) sdd[D*ns + a] = c*P[a];
+                if (gradB && diminish && e > 0)
+                {
+                    // + N grad eta, grad eta = sum over the mask of grad B
+                    const scalar Nv = ds/e;
+                    for (unsigned m = adj[s]; m; m &= m - 1)
+                    {
+                        const vector& gB = gradB[__builtin_ctz(m)];
+                        for (label a = 0; a < D; ++a)
+                        {
+                            sdd[D*ns + a] += Nv*gB[axis[a]];
+                        }
+                    }
+                }
+            }
             svOut[ns] = v;
             sdOut[ns] = ds;
             for (label a = 0; a < D; ++a) sxOut[D*ns + a] = P[a];
@@ -365,12 +446,23 @@ Foam::mlsRingKernel::mlsRingKernel
 :
     mpmKernel(dict, mesh),
     diminish_(diminish),
+    gradient_
+    (
+        static_cast<int>
+        (
+            dictionaryChecks::getEnum
+            (
+                dict, "gradient", gradientNames, gradientKind::fit
+            )
+        )
+    ),
     h_(supportSizes(dict, mesh)),
     support2_(h_.size()),
     rings_(mesh),
     sampleVertex_(rings_.maxSize),
     sampleD_(rings_.maxSize),
-    sampleDx_(mesh.dim()*rings_.maxSize)
+    sampleDx_(mesh.dim()*rings_.maxSize),
+    sampleDD_(gradient_ == 0 ? 0 : mesh.dim()*rings_.maxSize)
 {
     // bSpline(r) = 0 for r >= 1.5: the slack keeps every vertex with
     // |x_v - x_p|/h_v < 1.5 despite round-off in the squares
@@ -440,6 +532,8 @@ void Foam::mlsRingKernel::computeDim
     label* __restrict__ sv_ = sampleVertex_.data();
     scalar* __restrict__ sd = sampleD_.data();
     scalar* __restrict__ sx = sampleDx_.data();
+    scalar* __restrict__ sdd = gradient_ == 0 ? nullptr : sampleDD_.data();
+    const bool etaGradient = gradient_ == 2;
 
     mpmMeshView::shapeValues sv;
     label k = 0;
@@ -448,7 +542,14 @@ void Foam::mlsRingKernel::computeDim
     {
         const label c = cells[p];
         const vector& xp = x[p];
-        mesh_.shapeValuesOnly(c, xp, sv);   // eta needs B only
+        if (etaGradient)
+        {
+            mesh_.shapeFunctions(c, xp, sv);
+        }
+        else
+        {
+            mesh_.shapeValuesOnly(c, xp, sv);   // eta needs B only
+        }
         scalar xpa[D];
         for (label a = 0; a < D; ++a) xpa[a] = xp[ax[a]];
 
@@ -458,7 +559,8 @@ void Foam::mlsRingKernel::computeDim
         {
             diminish_, sv.B.cdata(), ringVertex.cdata() + rb,
             ringAdj.cdata() + rb, vx.cdata(), ax, xpa, support2.cdata(),
-            h.cdata(), sv_, sd, sx
+            h.cdata(), sv_, sd, sx, sdd,
+            etaGradient ? sv.gradB.cdata() : nullptr
         };
         label ns = 0;
         switch (sv.n)
@@ -491,6 +593,12 @@ void Foam::mlsRingKernel::computeDim
         scalar MinvT[n][n];
         for (label i = 0; i < n; ++i)
             for (label j = 0; j < n; ++j) MinvT[j][i] = Minv[i][j];
+
+        // gradient heldEta, derivative: T_a = sum_u dd_u,a alpha_u [1, P_u],
+        // alpha_u = (M^-1 [1, P_u])_0 (see derivativeTerms)
+        scalar T[D][n];
+        if (sdd) derivativeTerms<D>(ns, sdd, sx, Minv, T);
+
         for (label s = 0; s < ns; ++s)
         {
             const scalar* P = sx + D*s;
@@ -501,18 +609,29 @@ void Foam::mlsRingKernel::computeDim
                 for (label i = 0; i < n; ++i) q[i] += MinvT[j + 1][i]*P[j];
             }
             const scalar ds = sd[s];
+            scalar g[D];
+            for (label a = 0; a < D; ++a) g[a] = ds*q[a + 1];
+            if (sdd)
+            {
+                for (label a = 0; a < D; ++a)
+                {
+                    scalar Tq = 0;
+                    for (label i = 0; i < n; ++i) Tq += T[a][i]*q[i];
+                    g[a] += sdd[D*s + a]*q[0] - ds*Tq;
+                }
+            }
             vOut[k] = sv_[s];
             wOut[k] = ds*q[0];
             if (D == 3)
             {
                 // The solution axes of a 3D mesh are x, y, z
-                gOut[k] = vector(ds*q[1], ds*q[2], ds*q[3]);
+                gOut[k] = vector(g[0], g[1], g[2]);
             }
             else
             {
-                vector& g = gOut[k];
-                g = Zero;
-                for (label a = 0; a < D; ++a) g[ax[a]] = ds*q[a + 1];
+                vector& gk = gOut[k];
+                gk = Zero;
+                for (label a = 0; a < D; ++a) gk[ax[a]] = g[a];
             }
             ++k;
         }
