@@ -305,6 +305,34 @@ TEST(mpmKernels, capabilitiesMatchWeights)
 }
 
 
+// stepLength (mpmProperties stepLength kernel): the shortest mean edge for
+// linear, the narrowest support h_v for umls (the longest edge by
+// default, the graded field with supportSize graded), never shorter
+TEST(mpmKernels, stepLengthIsTheNarrowestSupport)
+{
+    auto m = testMeshes::plane(8, false, 0.2);
+    scalar minMean = GREAT, minMax = GREAT;
+    forAll(m->vertexSize(), v)
+    {
+        minMean = min(minMean, m->vertexSize()[v]);
+        minMax = min(minMax, m->vertexMaxEdge()[v]);
+    }
+    EXPECT_DOUBLE_EQ(kernel("linear", *m)->stepLength(), minMean);
+    EXPECT_DOUBLE_EQ(kernel("umls", *m)->stepLength(), minMax);
+    EXPECT_DOUBLE_EQ
+    (
+        kernel("umls", *m, "supportSize mean;")->stepLength(), minMean
+    );
+    const scalar graded =
+        kernel("umls", *m, "supportSize graded;")->stepLength();
+    EXPECT_GE(graded, minMax);
+    std::cout << "  perturbed triangles: shortest mean edge " << minMean
+        << ", narrowest umls support " << minMax << ", graded " << graded
+        << std::endl;
+    EXPECT_GT(minMax, minMean);     // else the checks above tell nothing
+}
+
+
 TEST(mpmKernel, unknownKernelIsFatalIOError)
 {
     auto m = testMeshes::line(testMeshes::graded(4, 1.0));

@@ -659,4 +659,12 @@ void Foam::mlsRingKernel::compute
 }
 
 
+Foam::scalar Foam::mlsRingKernel::stepLength() const
+{
+    scalar m = GREAT;
+    forAll(h_, v) m = min(m, h_[v]);
+    return m;
+}
+
+
 // ************************************************************************* //

@@ -35,4 +35,13 @@ Foam::autoPtr<Foam::mpmKernel> Foam::mpmKernel::New
 }
 
 
+Foam::scalar Foam::mpmKernel::stepLength() const
+{
+    const scalarList& h = mesh_.vertexSize();
+    scalar m = GREAT;
+    forAll(h, v) m = min(m, h[v]);
+    return m;
+}
+
+
 // ************************************************************************* //

@@ -29,6 +29,21 @@ void Foam::mpmSolver::readSettings(const dictionary& dict)
     maxDeltaT_ = getPositive(dict, "maxDeltaT", 1e30);
     maxSteps_ = getInRange(dict, "maxSteps", 1e9, 0, 1e15);
 
+    // The length of CFL h/c: the shortest vertex size (mean edge), or the
+    // kernel's own (for mlsRing and umls the narrowest support h_v)
+    const word stepLength
+    (
+        getAsOrDefault<word>(dict, "stepLength", "vertex", "vertex or kernel")
+    );
+    if (stepLength != "vertex" && stepLength != "kernel")
+    {
+        badEntry(dict, "stepLength", stepLength, "vertex or kernel");
+    }
+    if (stepLength == "kernel")
+    {
+        hMin_ = kernel_->stepLength();
+    }
+
     // USL by default (Algorithm 1); MUSL for a kernel whose vertices at a
     // free surface can hold a vanishing mass (linear)
     const word scheme
