@@ -136,7 +136,9 @@ def _f(x, spec="%.3f"):
 
 
 def _seriesText(name):
-    return " ".join("%s %s" % (k, v) for k, v in name.items()) or "all"
+    """'kernel umls mesh strip' (settings left as the case has them out)."""
+    return " ".join("%s %s" % (k, v) for k, v in name.items()
+                    if v != "(case)") or "all"
 
 
 def write(study, results, studyDir):
@@ -182,6 +184,10 @@ def write(study, results, studyDir):
 
 
 def plot(study, results, path):
+    """One line per series: its colour from every series setting but the
+    last, its marker and line style from the last (with 'by (kernel
+    mesh)', a colour per kernel and a marker per mesh); the legend beside
+    the axes."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -189,24 +195,23 @@ def plot(study, results, path):
     spec = study.convergence
     names = spec.seriesNames(study)
     rows = orders(study, results)
-    colourBy = str(study.colourBy) if study.colourBy in names else \
-        (names[0] if names else None)
-    rest = [n for n in names if n != colourBy]
+    head, last = (names[:-1], names[-1:]) if len(names) > 1 else (names, [])
+
+    def key(r, ns):
+        return tuple(r["series"][n] for n in ns)
     cvals, mvals = [], []
     for r in rows:
-        c = r["series"].get(colourBy)
-        m = tuple(r["series"][n] for n in rest)
-        if c not in cvals:
-            cvals.append(c)
-        if m not in mvals:
-            mvals.append(m)
+        if key(r, head) not in cvals:
+            cvals.append(key(r, head))
+        if key(r, last) not in mvals:
+            mvals.append(key(r, last))
     cmap = plt.get_cmap("tab10")
     markers = "osD^v<>ph*"
     styles = ["-", "--", ":", "-."]
-    fig, ax = plt.subplots(figsize=(8, 6))
+    fig, ax = plt.subplots(figsize=(11, 6.5))
     for r in rows:
-        ci = cvals.index(r["series"].get(colourBy))
-        mi = mvals.index(tuple(r["series"][n] for n in rest))
+        ci = cvals.index(key(r, head))
+        mi = mvals.index(key(r, last))
         ax.plot(r["h"], r["error"], markers[mi % len(markers)] +
                 styles[mi % len(styles)], color=cmap(ci % 10), ms=5,
                 label="%s: %s" % (_seriesText(r["series"]),
@@ -222,7 +227,8 @@ def plot(study, results, path):
     ax.set_title("%s: error against %s (order: least-squares slope)"
                  % (study.name, spec.size))
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=6, loc="best", ncol=1 if len(rows) <= 12 else 2)
+    ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.01, 1.0),
+              borderaxespad=0)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)

@@ -7,6 +7,8 @@
 //          1: Delaunay triangles of size lc (unstructured)
 //          2: Delaunay triangles graded along x: size 0.4 lc at x = 0 to
 //             1.6 lc at x = 25 (4x across the bar, mean lc), lc beyond
+//          3: quadrilaterals graded along x: the columns growing 4x from
+//             x = 0 to x = 25 (as many as family 0's), rows of size lc
 If (!Exists(lc)) lc = 0.5; EndIf
 If (!Exists(family)) family = 1; EndIf
 H = 2.5;
@@ -16,9 +18,16 @@ Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 5};
 Line(5) = {5, 6}; Line(6) = {6, 1}; Line(7) = {2, 5};
 Curve Loop(1) = {1, 7, 5, 6};  Plane Surface(1) = {1};    // the bar
 Curve Loop(2) = {2, 3, 4, -7}; Plane Surface(2) = {2};    // room beyond
-If (family == 0)
+If (family == 0 || family == 3)
     nx1 = Round(25/lc); nx2 = Round(5/lc); ny = Round(H/lc);
-    Transfinite Curve{1, 5} = nx1 + 1;
+    If (family == 0)
+        Transfinite Curve{1, 5} = nx1 + 1;
+    EndIf
+    If (family == 3)
+        r = 4^(1/(nx1 - 1));
+        Transfinite Curve{1} = nx1 + 1 Using Progression r;
+        Transfinite Curve{5} = nx1 + 1 Using Progression 1/r;   // 5 runs 5 -> 6
+    EndIf
     Transfinite Curve{2, 4} = nx2 + 1;
     Transfinite Curve{3, 6, 7} = ny + 1;
     Transfinite Surface{1} = {1, 2, 5, 6};
