@@ -23,6 +23,7 @@ import math
 import os
 
 from .foamDict import DictError, toText
+from .report import logAxes
 
 
 class ConvergenceSpec:
@@ -216,12 +217,7 @@ def plot(study, results, path):
                 styles[mi % len(styles)], color=cmap(ci % 10), ms=5,
                 label="%s: %s" % (_seriesText(r["series"]),
                                   "order %s" % _f(r["order"], "%.2f")))
-    if rows:
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-    else:
-        ax.text(0.5, 0.5, "no point finished with a positive error",
-                ha="center", transform=ax.transAxes)
+    logAxes(ax, bool(rows))
     ax.set_xlabel(spec.size)
     ax.set_ylabel(study.error.name)
     ax.set_title("%s: error against %s (order: least-squares slope)"

@@ -165,6 +165,16 @@ def writeMarkdown(study, results, targets, axis, info, path):
         f.write("\n".join(out))
 
 
+def logAxes(ax, anything):
+    """Log-log axes, or (nothing to draw: a log axis would fail) a note."""
+    if anything:
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+    else:
+        ax.text(0.5, 0.5, "no point finished with a positive error",
+                ha="center", transform=ax.transAxes)
+
+
 def plot(study, results, targets, axis, path):
     import matplotlib
     matplotlib.use("Agg")
@@ -240,12 +250,7 @@ def plot(study, results, targets, axis, path):
     for k, v in enumerate(mvals):
         ax.plot([], [], markers[k % len(markers)], color="grey",
                 label="%s %s" % (markerBy, v))
-    if ok:
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-    else:
-        ax.text(0.5, 0.5, "no point finished with a positive error",
-                ha="center", transform=ax.transAxes)
+    logAxes(ax, bool(ok))
     ax.set_xlabel(axisText(study))
     ax.set_ylabel(study.error.name)
     nf = sum(1 for r in results if r.get("status") == "failed")

@@ -203,22 +203,9 @@ TEST(kernelGradient, continuityAcrossFaces)
         for (const char* g : {"fit", "heldEta", "derivative"})
         {
             auto k = kernel("umls", m, std::string("gradient ") + g + ";");
-            scalar worst = 0;
-            label n = 0;
-            for (label i = 0; i < m.nCells(); i += max(1, m.nCells()/40))
-            {
-                const label cv0 = m.cellVertices()[m.cellBegin(i)];
-                if (m.boundaryVertex(cv0)) continue;
-                const vector xf = m.vertices()[cv0];
-                vector d(1e-6, 0.7e-6, 0.3e-6);
-                for (label a = m.dim(); a < 3; ++a) d[a] = 0;
-                const vector a = xf - d, b = xf + d;
-                const label ca = m.findCell(a, i), cb = m.findCell(b, i);
-                if (ca < 0 || cb < 0 || ca == cb) continue;
-                const auto j = jump(evaluate(*k, a, ca), evaluate(*k, b, cb));
-                worst = max(worst, j.second);
-                ++n;
-            }
+            const crossings c = crossAtVertices(*k);
+            const scalar worst = c.gradW;
+            const label n = c.n;
             std::cout << "  " << mc.first << ", gradient " << g << ": "
                 << n << " crossings, largest jump of grad w " << worst
                 << std::endl;

@@ -111,22 +111,9 @@ TEST(gradedSize, identitiesAndContinuityHold)
         // Crossing the vertices (1D) or the grid lines (2D, 3D) at
         // x = 1.5 .. : umls changes w and grad w by < 1e-4 of their size
         auto u = kernel("umls", m, "supportSize graded;");
-        scalar worst = 0;
-        label n = 0;
-        for (label i = 0; i < m.nCells(); i += max(1, m.nCells()/40))
-        {
-            const label cv0 = m.cellVertices()[m.cellBegin(i)];
-            const vector xf = m.vertices()[cv0];
-            if (m.boundaryVertex(cv0)) continue;
-            vector d(1e-6, 0.7e-6, 0.3e-6);
-            for (label a = m.dim(); a < 3; ++a) d[a] = 0;
-            const vector a = xf - d, b = xf + d;
-            const label ca = m.findCell(a, i), cb = m.findCell(b, i);
-            if (ca < 0 || cb < 0 || ca == cb) continue;
-            const auto j = jump(evaluate(*u, a, ca), evaluate(*u, b, cb));
-            worst = max(worst, max(j.first, j.second));
-            ++n;
-        }
+        const crossings c = crossAtVertices(*u);
+        const scalar worst = max(c.w, c.gradW);
+        const label n = c.n;
         std::cout << "  " << mc.first << ": " << n << " crossings at vertices,"
             << " umls graded max jump " << worst << std::endl;
         EXPECT_GT(n, 0) << mc.first;
