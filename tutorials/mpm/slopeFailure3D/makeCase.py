@@ -2,7 +2,7 @@
 """Write one slope-failure case (dissertation 2.3.4, Fig. 2.20) into
 directory D: python3 makeCase.py D [kernel=umls] [h=0.5] [H=8] [beta=60]
 [crest=12] [floor=20] [depth=1] [tEnd=6] [write=0.25] [transfer=FLIP] [flip=0.99]
-[structured=1] [tet=1] [support=mean] [update=USL]
+[structured=1] [tet=1] [support=mean] [update=USL] [step=vertex] [CFL=0.4]
 
 Geometry (the dissertation gives the figure, not the numbers; these are
 chosen here): a slope of sensitive clay H high at beta degrees, its crest
@@ -19,14 +19,16 @@ gmshToFoam yourself: see Allrun): structured=1 the cubes h cut into 6
 tetrahedra each (the vertices of the bspline2 mesh), structured=0 gmsh's
 unstructured tetrahedra of size tet*h; support: the umls kernel's
 supportSize (mean or maxEdge edge of the vertex, or graded: the sizing
-field over the longest edges).  kernel bspline2: a
+field over the longest edges); step: mpmProperties' stepLength (vertex:
+the shortest mean edge sets the step; kernel: the narrowest umls
+support).  kernel bspline2: a
 blockMesh of cubes h.  Particles on a lattice of spacing h/2, the same in both:
 particle columns of width h/2 up to the slope's surface at their centre.
 """
 import math, os, sys
 a = dict(kernel='umls', h=0.5, H=8.0, beta=60.0, crest=12.0, floor=20.0,
          depth=1.0, tEnd=6.0, write=0.25, transfer='FLIP', flip=0.99, structured=1, tet=1.0,
-         support='mean', update='USL')
+         support='mean', update='USL', step='vertex', CFL=0.4)
 d = sys.argv[1]
 for kv in sys.argv[2:]:
     k, v = kv.split('=')
@@ -101,7 +103,8 @@ kernel      {a["kernel"]};{support}
 updateScheme {a["update"]};
 transfer    {a["transfer"]};
 flipRatio   {a["flip"]:g};
-CFL         0.4;
+CFL         {a["CFL"]:g};
+stepLength  {a["step"]};
 gravity     (0 -9.81 0);
 logInterval 2000;
 
