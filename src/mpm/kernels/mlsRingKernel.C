@@ -226,7 +226,8 @@ const unsigned hexCellMask[8] =
 // symmetric: on irregular meshes the bar's frequency then stays off by
 // ~0.5 % however fine the mesh).  Holding eta keeps the gradient
 // continuous where particles cross faces; the identities hold for any
-// fixed sample weights, so they hold for it.
+// fixed sample weights, so they hold for it.  With eta's own gradient in
+// dd_u (gradient derivative) the same formula is the whole derivative.
 template<int D>
 inline void derivativeTerms
 (
