@@ -9,6 +9,8 @@
 #include "Pstream.H"
 #include "PstreamReduceOps.H"
 
+#include <algorithm>
+
 namespace Foam
 {
     defineTypeNameAndDebug(mlsRingKernel, 0);
@@ -662,9 +664,7 @@ void Foam::mlsRingKernel::compute
 
 Foam::scalar Foam::mlsRingKernel::stepLength() const
 {
-    scalar m = GREAT;
-    forAll(h_, v) m = min(m, h_[v]);
-    return m;
+    return *std::min_element(h_.begin(), h_.end());
 }
 
 

@@ -6,6 +6,8 @@
 #include "mpmKernel.H"
 #include "dictionaryChecks.H"
 
+#include <algorithm>
+
 namespace Foam
 {
     defineTypeNameAndDebug(mpmKernel, 0);
@@ -38,9 +40,7 @@ Foam::autoPtr<Foam::mpmKernel> Foam::mpmKernel::New
 Foam::scalar Foam::mpmKernel::stepLength() const
 {
     const scalarList& h = mesh_.vertexSize();
-    scalar m = GREAT;
-    forAll(h, v) m = min(m, h[v]);
-    return m;
+    return *std::min_element(h.begin(), h.end());
 }
 
 

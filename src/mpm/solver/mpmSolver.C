@@ -39,10 +39,10 @@ void Foam::mpmSolver::readSettings(const dictionary& dict)
     {
         badEntry(dict, "stepLength", stepLength, "vertex or kernel");
     }
-    if (stepLength == "kernel")
-    {
-        hMin_ = kernel_->stepLength();
-    }
+    hMin_ =
+        stepLength == "kernel"
+      ? kernel_->stepLength()
+      : kernel_->mpmKernel::stepLength();
 
     // USL by default (Algorithm 1); MUSL for a kernel whose vertices at a
     // free surface can hold a vanishing mass (linear)
@@ -217,7 +217,7 @@ Foam::mpmSolver::mpmSolver
     maxDeltaT_(1e30),
     maxSteps_(1e9),
     musl_(false),
-    hMin_(*std::min_element(mesh.vertexSize().begin(), mesh.vertexSize().end())),
+    hMin_(0),   // set by readSettings
     grid_(mesh.nVertices()),
     anyFbar_(false),
     inversion_(dict, mesh.offAxes()),
