@@ -272,3 +272,93 @@ TEST(kernelGradient, badEntryIsFatalIOError)
     }
     FatalIOError.dontThrowExceptions();
 }
+
+
+// supportSize ring: every interior vertex of a uniform line reaches two
+// cells (its ring changes at the faces two cells away), of a uniform grid
+// of squares sqrt(2) cells (the re-entrant corners of its 2-star)
+TEST(kernelGradient, ringReachOfUniformMeshes)
+{
+    std::vector<double> xs;
+    for (label i = 0; i <= 12; ++i) xs.push_back(0.5*i);
+    const auto line = testMeshes::line(xs);
+    const scalarList r1(line->ringReach());
+    forAll(r1, v)
+    {
+        EXPECT_NEAR(r1[v], 1.0, 1e-12) << "line vertex " << v;
+    }
+
+    const auto grid = testMeshes::plane(8, true, 0);
+    const scalarList r2(grid->ringReach());
+    label n = 0;
+    forAll(r2, v)
+    {
+        const vector& x = grid->vertices()[v];
+        const scalar s = grid->vertexSize()[v];
+        const vector lo = x - grid->bbMin(), hi = grid->bbMax() - x;
+        if (min(min(lo.x(), lo.y()), min(hi.x(), hi.y())) < 3*s) continue;
+        EXPECT_NEAR(r2[v], std::sqrt(2.0)*s, 1e-12*s) << "grid vertex " << v;
+        ++n;
+    }
+    EXPECT_GT(n, 0);
+}
+
+
+// supportSize ring with the weights' own gradient: continuous across faces
+// without eta (value and gradient), the derivative of the weights, and the
+// integration constraint, on the irregular meshes, with either sample
+// weight.  The same kernel over the vertices' longest edges jumps where
+// the ring changes (2D, 3D).
+TEST(kernelGradient, ringSupportsSmoothAndConsistent)
+{
+    for (const auto& mc : irregularMeshes())
+    {
+        const mpmMeshView& m = *mc.second;
+        const scalar lo = m.bbMin().x() + 1.2, hi = m.bbMax().x() - 1.2;
+        for (const char* w : {"quadratic", "cubic", "adaptive"})
+        {
+            auto k = kernel
+            (
+                "mlsRing", m,
+                std::string("supportSize ring; gradient derivative; ")
+              + "sampleWeight " + w + ";"
+            );
+            const std::string what = mc.first + ", ring, " + w;
+            scalar worst = 0;
+            for (const vector& x : samples(m.dim(), lo, hi, 20, 13))
+            {
+                checkIdentities(*k, x, what);
+                worst = max(worst, derivativeMismatch(*k, x));
+            }
+            const crossings c = crossAtVertices(*k);
+            std::cout << "  " << what << ": |grad w - finite difference| / "
+                << "|grad w| up to " << worst << "; " << c.n
+                << " crossings, largest jumps of w " << c.w
+                << " and grad w " << c.gradW;
+            EXPECT_LT(worst, 1e-5) << what;
+            EXPECT_GT(c.n, 0) << what;
+            EXPECT_LT(c.w, 1e-4) << what;
+            EXPECT_LT(c.gradW, 1e-4) << what;
+            if (m.dim() < 3)
+            {
+                const scalar defect = integrationDefect
+                (
+                    *k, m.bbMin().x() + 0.01, m.bbMax().x() - 0.01,
+                    m.dim() == 1 ? 1e-3 : 8e-3, 3
+                );
+                std::cout << "; |sum V grad w| / sum V |grad w| up to "
+                    << defect;
+                EXPECT_LT(defect, 1e-4) << what;
+            }
+            std::cout << std::endl;
+        }
+        if (m.dim() > 1)
+        {
+            auto k = kernel("mlsRing", m, "gradient derivative;");
+            const crossings c = crossAtVertices(*k);
+            std::cout << "  " << mc.first << ", maxEdge: largest jump of "
+                << "grad w " << c.gradW << std::endl;
+            EXPECT_GT(c.gradW, 1e-2) << mc.first << " maxEdge";
+        }
+    }
+}

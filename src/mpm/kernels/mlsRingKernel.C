@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "mlsRingKernel.H"
+#include "mlsMoments.H"
 #include "addToRunTimeSelectionTable.H"
 #include "dictionaryChecks.H"
 #include "Pstream.H"
@@ -21,13 +22,15 @@ namespace Foam
 namespace
 {
 using namespace Foam;
+using namespace Foam::mlsMoments;
 
-enum class supportSize { mean, maxEdge, graded };
+enum class supportSize { mean, maxEdge, graded, ring };
 const Enum<supportSize> supportSizeNames
 ({
     { supportSize::mean, "mean" },
     { supportSize::maxEdge, "maxEdge" },
     { supportSize::graded, "graded" },
+    { supportSize::ring, "ring" },
 });
 
 // The weights' gradient: the slope of the fit (2.22), the derivative of
@@ -42,12 +45,44 @@ const Enum<gradientKind> gradientNames
     { gradientKind::derivative, "derivative" },
 });
 
+// The sample weight d_vp's profile over its support radius 1.5 h_v
+enum class sampleWeightKind { quadratic, cubic, adaptive };
+const Enum<sampleWeightKind> sampleWeightNames
+({
+    { sampleWeightKind::quadratic, "quadratic" },
+    { sampleWeightKind::cubic, "cubic" },
+    { sampleWeightKind::adaptive, "adaptive" },
+});
+
 // The vertex sizes a graded sizing field starts from
 const Enum<supportSize> gradedFromNames
 ({
     { supportSize::mean, "mean" },
     { supportSize::maxEdge, "maxEdge" },
 });
+
+// supportSize ring: 1.5 h_v = the vertex's ring reach, so that its sample
+// weight and the weight's gradient vanish on every face where it enters or
+// leaves a particle's ring: the weights are then as smooth as the sample
+// weight without eta, and their own derivative is continuous
+scalarList ringSupports(const mpmMeshView& mesh)
+{
+    scalarList h(mesh.ringReach());
+    const scalarList& own = mesh.vertexMaxEdge();
+    scalar lo = GREAT, hi = 0;
+    forAll(h, v)
+    {
+        h[v] = h[v] < GREAT ? h[v]/1.5 : own[v];
+        lo = min(lo, h[v]/own[v]);
+        hi = max(hi, h[v]/own[v]);
+    }
+    Info<< "MLS supports: 1.5 h_v = the reach of each vertex's ring, h_v "
+        << returnReduce(lo, minOp<scalar>()) << " to "
+        << returnReduce(hi, maxOp<scalar>())
+        << " times the vertex's longest edge" << endl;
+    return h;
+}
+
 
 // h_v of every vertex: its own edges (mean or longest), or the graded
 // sizing field over the longest edges (chapter 5: supports that follow
@@ -60,6 +95,7 @@ scalarList supportSizes(const dictionary& dict, const mpmMeshView& mesh)
     );
     if (s == supportSize::mean) return mesh.vertexSize();
     if (s == supportSize::maxEdge) return mesh.vertexMaxEdge();
+    if (s == supportSize::ring) return ringSupports(mesh);
 
     const scalar g =
         dictionaryChecks::getInRange(dict, "supportGradient", 0.25, 0, 1);
@@ -77,121 +113,6 @@ scalarList supportSizes(const dictionary& dict, const mpmMeshView& mesh)
         << ": h_v up to " << returnReduce(raised, maxOp<scalar>())
         << " times the vertex's own" << endl;
     return h;
-}
-
-// Closed-form inverse of the symmetric 3 x 3 moment matrix (2D); returns
-// |det| relative to the product of the diagonal (0: singular)
-scalar invertMoment3(const scalar M[4][4], scalar Minv[4][4])
-{
-    const scalar c00 = M[1][1]*M[2][2] - M[1][2]*M[1][2];
-    const scalar c01 = M[0][2]*M[1][2] - M[0][1]*M[2][2];
-    const scalar c02 = M[0][1]*M[1][2] - M[0][2]*M[1][1];
-    const scalar det = M[0][0]*c00 + M[0][1]*c01 + M[0][2]*c02;
-    const scalar scale = std::abs(M[0][0]*M[1][1]*M[2][2]);
-    if (det == 0 || scale == 0) return 0;
-    const scalar r = 1/det;
-    Minv[0][0] = c00*r;
-    Minv[0][1] = Minv[1][0] = c01*r;
-    Minv[0][2] = Minv[2][0] = c02*r;
-    Minv[1][1] = (M[0][0]*M[2][2] - M[0][2]*M[0][2])*r;
-    Minv[1][2] = Minv[2][1] = (M[0][2]*M[0][1] - M[0][0]*M[1][2])*r;
-    Minv[2][2] = (M[0][0]*M[1][1] - M[0][1]*M[0][1])*r;
-    return std::abs(det)/scale;
-}
-
-
-// Inverse of the symmetric 4 x 4 moment matrix (3D) M = [a b^T; b C] by
-// its Schur complement S = C - b b^T/a (M is positive semi-definite: d >= 0,
-// so no pivoting is needed): M^-1 = [(1 + b.u)/a, -u^T; -u, S^-1] with
-// u = S^-1 b/a.  Returns |det M| relative to the product of the diagonal
-// (0: singular), as invertMoment3 does.
-scalar invertMoment4(const scalar M[4][4], scalar Minv[4][4])
-{
-    const scalar a = M[0][0];
-    if (!(a > 0)) return 0;
-    const scalar ra = 1/a;
-    const scalar b0 = M[1][0], b1 = M[2][0], b2 = M[3][0];
-    const scalar s00 = M[1][1] - b0*b0*ra;
-    const scalar s01 = M[2][1] - b1*b0*ra;
-    const scalar s02 = M[3][1] - b2*b0*ra;
-    const scalar s11 = M[2][2] - b1*b1*ra;
-    const scalar s12 = M[3][2] - b2*b1*ra;
-    const scalar s22 = M[3][3] - b2*b2*ra;
-    const scalar c00 = s11*s22 - s12*s12;
-    const scalar c01 = s02*s12 - s01*s22;
-    const scalar c02 = s01*s12 - s02*s11;
-    const scalar detS = s00*c00 + s01*c01 + s02*c02;
-    const scalar scale = std::abs(M[1][1]*M[2][2]*M[3][3]);
-    if (detS == 0 || scale == 0) return 0;
-    const scalar r = 1/detS;
-    const scalar i00 = c00*r, i01 = c01*r, i02 = c02*r;
-    const scalar i11 = (s00*s22 - s02*s02)*r;
-    const scalar i12 = (s02*s01 - s00*s12)*r;
-    const scalar i22 = (s00*s11 - s01*s01)*r;
-    const scalar u0 = (i00*b0 + i01*b1 + i02*b2)*ra;
-    const scalar u1 = (i01*b0 + i11*b1 + i12*b2)*ra;
-    const scalar u2 = (i02*b0 + i12*b1 + i22*b2)*ra;
-    Minv[0][0] = (1 + b0*u0 + b1*u1 + b2*u2)*ra;
-    Minv[0][1] = Minv[1][0] = -u0;
-    Minv[0][2] = Minv[2][0] = -u1;
-    Minv[0][3] = Minv[3][0] = -u2;
-    Minv[1][1] = i00;
-    Minv[1][2] = Minv[2][1] = i01;
-    Minv[1][3] = Minv[3][1] = i02;
-    Minv[2][2] = i11;
-    Minv[2][3] = Minv[3][2] = i12;
-    Minv[3][3] = i22;
-    // det M = a det S; the diagonal's product a M11 M22 M33
-    return std::abs(detS)/scale;
-}
-
-
-// Invert the symmetric (n x n, n <= 4) moment matrix M by Gauss-Jordan
-// elimination with partial pivoting.  Returns the smallest pivot relative to
-// the largest diagonal entry (0: singular).
-scalar invertMoment(const label n, scalar M[4][4], scalar Minv[4][4])
-{
-    scalar A[4][8];
-    scalar diagMax = 0;
-    for (label i = 0; i < n; ++i)
-    {
-        diagMax = max(diagMax, std::abs(M[i][i]));
-        for (label j = 0; j < n; ++j)
-        {
-            A[i][j] = M[i][j];
-            A[i][n + j] = (i == j);
-        }
-    }
-    scalar minPivot = GREAT;
-    for (label k = 0; k < n; ++k)
-    {
-        label p = k;
-        for (label i = k + 1; i < n; ++i)
-        {
-            if (std::abs(A[i][k]) > std::abs(A[p][k])) p = i;
-        }
-        const scalar piv = A[p][k];
-        minPivot = min(minPivot, std::abs(piv));
-        if (piv == 0) return 0;
-        if (p != k)
-        {
-            for (label j = 0; j < 2*n; ++j) std::swap(A[k][j], A[p][j]);
-        }
-        const scalar inv = 1/piv;
-        for (label j = 0; j < 2*n; ++j) A[k][j] *= inv;
-        for (label i = 0; i < n; ++i)
-        {
-            if (i == k) continue;
-            const scalar f = A[i][k];
-            if (f == 0) continue;
-            for (label j = 0; j < 2*n; ++j) A[i][j] -= f*A[k][j];
-        }
-    }
-    for (label i = 0; i < n; ++i)
-    {
-        for (label j = 0; j < n; ++j) Minv[i][j] = A[i][n + j];
-    }
-    return diagMax > 0 ? minPivot/diagMax : 0;
 }
 
 // The three edge neighbours in a hexahedron of its vertex i (ascending),
@@ -216,85 +137,6 @@ const unsigned hexCellMask[8] =
 };
 
 
-// The derivative of w_vp = d_vp (M^-1 [1, P_v])_0 in x_p with eta held,
-// P_v = x_v - x_p: d/dx_a of d_v, of M (through d_u and P_u) and of P_v
-// give, after sum_u d_u P_u = M e_0 cancels two of the terms,
-//     dw_v/dx_a = d_v q_v,a+1 + dd_v,a alpha_v - d_v T_a . q_v
-// with q_v = M^-1 [1, P_v], alpha_v = q_v,0 and
-//     T_a = sum_u dd_u,a alpha_u [1, P_u], dd_u = grad_xp d_u.
-// The first term is the fit's slope (2.22); the others make the gradient
-// the weights' own, so that sum_p V_p grad w_vp integrates to the
-// boundary on any mesh (the fit's slope does only where the ring is
-// symmetric: on irregular meshes the bar's frequency then stays off by
-// ~0.5 % however fine the mesh).  Holding eta keeps the gradient
-// continuous where particles cross faces; the identities hold for any
-// fixed sample weights, so they hold for it.  With eta's own gradient in
-// dd_u (gradient derivative) the same formula is the whole derivative.
-template<int D>
-inline void derivativeTerms
-(
-    const label ns,
-    const scalar* __restrict__ dd,
-    const scalar* __restrict__ dx,
-    const scalar Minv[4][4],
-    scalar T[D][D + 1]
-)
-{
-    constexpr label n = D + 1;
-    for (label a = 0; a < D; ++a)
-        for (label i = 0; i < n; ++i) T[a][i] = 0;
-    for (label s = 0; s < ns; ++s)
-    {
-        const scalar* P = dx + D*s;
-        scalar alpha = Minv[0][0];
-        for (label j = 0; j < D; ++j) alpha += Minv[0][j + 1]*P[j];
-        for (label a = 0; a < D; ++a)
-        {
-            const scalar c = dd[D*s + a]*alpha;
-            T[a][0] += c;
-            for (label j = 0; j < D; ++j) T[a][j + 1] += c*P[j];
-        }
-    }
-}
-
-
-// Moment matrix M = sum_s d_s P_s P_s^T, P_s = [1, x_v - x_p] (dx: D per
-// sample), summed over the samples in order
-template<int D>
-inline void momentMatrix
-(
-    const label ns,
-    const scalar* __restrict__ d,
-    const scalar* __restrict__ dx,
-    scalar M[4][4]
-)
-{
-    constexpr label n = D + 1;
-    scalar m[n][n];
-    for (label i = 0; i < n; ++i)
-        for (label j = 0; j < n; ++j) m[i][j] = 0;
-    for (label s = 0; s < ns; ++s)
-    {
-        const scalar ds = d[s];
-        const scalar* P = dx + D*s;
-        m[0][0] += ds;
-        for (label i = 0; i < D; ++i)
-        {
-            m[0][i + 1] += ds*P[i];
-            for (label j = 0; j <= i; ++j) m[i + 1][j + 1] += ds*P[i]*P[j];
-        }
-    }
-    for (label i = 0; i < n; ++i)
-    {
-        for (label j = i; j < n; ++j)
-        {
-            const scalar mij = (i == 0 || j == 0) ? m[0][max(i, j)] : m[j][i];
-            M[i][j] = M[j][i] = mij;
-        }
-    }
-}
-
-
 // The samples of one particle over its cell's ring: the ring vertices
 // inside their support, with d_vp = eta_vp N(r/h_v) (eta only with
 // diminish) and the offsets x_v - x_p.  Compiled per number NV of the
@@ -303,6 +145,10 @@ template<int D>
 struct ringSamples
 {
     const bool diminish;
+    //- Sample weight profile: 0 quadratic, 1 cubic B-spline, 2 the bump
+    //  (1 - q^2)^k_v, k_v = power[v]
+    const int profile;
+    const label* power;
     const scalar* B;            //!< shape values of the cell's vertices
     const label* ringVertex;    //!< the ring (cell vertices first)
     const unsigned char* ringAdj;
@@ -402,17 +248,39 @@ struct ringSamples
                 e = max(e, scalar(0));
             }
             const scalar r = std::sqrt(r2);
-            const scalar ds = e*Foam::mlsRingKernel::bSpline(r/hv[v]);
+            const scalar rho = r/hv[v];
+            const scalar ds = e*
+            (
+                profile == 0 ? Foam::mlsRingKernel::bSpline(rho)
+              : profile == 1 ? Foam::mlsRingKernel::cubicSpline(rho)
+              : Foam::mlsRingKernel::bump(rho, power[v])
+            );
             if (ds == 0) continue;
 
             if (sdd)
             {
-                // e grad N = -e N'(r/h)/(h r) P: 2e/h^2 inside r < h/2,
-                // finite at r = 0
-                const scalar rho = r/hv[v];
-                const scalar c = rho < 0.5
-                    ? 2*e/(hv[v]*hv[v])
-                    : e*(1.5 - rho)/(hv[v]*r);
+                // e grad N = -e N'(r/h)/(h r) P, finite at r = 0:
+                // quadratic 2e/h^2 inside r < h/2; cubic N3(s), s = k r,
+                // k = 4/(3h): e k^2 (2 - 1.5 s) inside s < 1
+                scalar c;
+                if (profile == 2)
+                {
+                    // (1 - q^2)^k, q = rho/1.5: 2k e (1 - q^2)^(k-1)/(1.5 h)^2
+                    const scalar t = 1 - sqr(rho/1.5);
+                    c = 2*power[v]*ds/(t*sqr(1.5*hv[v]));
+                }
+                else if (profile == 1)
+                {
+                    const scalar k = 4/(3*hv[v]);
+                    const scalar s = k*r;
+                    c = s < 1 ? e*k*k*(2 - 1.5*s) : e*k*sqr(2 - s)/(2*r);
+                }
+                else
+                {
+                    c = rho < 0.5
+                        ? 2*e/(hv[v]*hv[v])
+                        : e*(1.5 - rho)/(hv[v]*r);
+                }
                 for (label a = 0; a < D; ++a) sdd[D*ns + a] = c*P[a];
                 if (gradB && diminish && e > 0)
                 {
@@ -459,6 +327,22 @@ Foam::mlsRingKernel::mlsRingKernel
             )
         )
     ),
+    profile_
+    (
+        static_cast<int>
+        (
+            dictionaryChecks::getEnum
+            (
+                dict, "sampleWeight", sampleWeightNames,
+                sampleWeightKind::quadratic
+            )
+        )
+    ),
+    ringSupports_
+    (
+        dict.found("supportSize")
+     && dict.get<word>("supportSize") == "ring"
+    ),
     h_(supportSizes(dict, mesh)),
     support2_(h_.size()),
     rings_(mesh),
@@ -472,6 +356,24 @@ Foam::mlsRingKernel::mlsRingKernel
     forAll(h_, v)
     {
         support2_[v] = sqr(1.5*h_[v])*(1 + 1e-10);
+    }
+    // sampleWeight adaptive: the bump's power from the support and the
+    // vertex's mean edge s_v, so that its width follows s_v
+    if (profile_ == 2)
+    {
+        power_.setSize(h_.size());
+        label kMax = 0;
+        forAll(h_, v)
+        {
+            power_[v] = max
+            (
+                label(3),
+                label(std::round(1.5*sqr(1.5*h_[v]/mesh.vertexSize()[v])))
+            );
+            kMax = max(kMax, power_[v]);
+        }
+        Info<< "MLS sample weights: (1 - (r/1.5 h_v)^2)^k_v, k_v from 3 to "
+            << returnReduce(kMax, maxOp<label>()) << endl;
     }
     // computeDim<3> writes the gradients as (x y z)
     if
@@ -560,9 +462,9 @@ void Foam::mlsRingKernel::computeDim
         const label re = ringStart[c + 1];
         const ringSamples<D> rs
         {
-            diminish_, sv.B.cdata(), ringVertex.cdata() + rb,
-            ringAdj.cdata() + rb, vx.cdata(), ax, xpa, support2.cdata(),
-            h.cdata(), sv_, sd, sx, sdd,
+            diminish_, profile_, power_.cdata(), sv.B.cdata(),
+            ringVertex.cdata() + rb, ringAdj.cdata() + rb, vx.cdata(), ax,
+            xpa, support2.cdata(), h.cdata(), sv_, sd, sx, sdd,
             etaGradient ? sv.gradB.cdata() : nullptr
         };
         label ns = 0;
@@ -588,6 +490,11 @@ void Foam::mlsRingKernel::computeDim
                 << type() << " kernel: the moment matrix of the particle at "
                 << xp << " in cell " << c << " is singular (its ring of "
                 << re - rb << " vertices is degenerate)"
+                << (ringSupports_
+                  ? ": with supportSize ring, the ring reach leaves fewer "
+                    "than dim + 1 vertices around this point (stretched "
+                    "cells); umls (eta) or supportSize maxEdge runs there"
+                  : "")
                 << exit(FatalError);
         }
 

@@ -12,57 +12,6 @@
 #include <algorithm>
 #include <limits>
 
-// * * * * * * * * * * * * * * * Local tables  * * * * * * * * * * * * * * //
-
-namespace
-{
-using Foam::label;
-
-// Edges of each shape, as pairs of local vertex indices
-const label segmentEdges[][2] = {{0, 1}};
-const label triEdges[][2] = {{0, 1}, {1, 2}, {2, 0}};
-const label quadEdges[][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-const label tetEdges[][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
-const label hexEdges[][2] =
-{
-    {0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4},
-    {0, 4}, {1, 5}, {2, 6}, {3, 7}
-};
-
-// Faces of each shape, local vertex indices, -1 padded.  Simplices: face k
-// is opposite vertex k.  Quad/hex: faces at xi_d = 0 and 1 for d = 0, 1, 2.
-const label segmentFaces[][4] = {{1, -1, -1, -1}, {0, -1, -1, -1}};
-const label triFaces[][4] = {{1, 2, -1, -1}, {2, 0, -1, -1}, {0, 1, -1, -1}};
-const label quadFaces[][4] =
-    {{0, 3, -1, -1}, {1, 2, -1, -1}, {0, 1, -1, -1}, {3, 2, -1, -1}};
-const label tetFaces[][4] =
-    {{1, 2, 3, -1}, {0, 2, 3, -1}, {0, 1, 3, -1}, {0, 1, 2, -1}};
-const label hexFaces[][4] =
-{
-    {0, 3, 7, 4}, {1, 2, 6, 5}, {0, 1, 5, 4}, {3, 2, 6, 7},
-    {0, 1, 2, 3}, {4, 5, 6, 7}
-};
-
-struct shapeTable
-{
-    label nEdges;
-    const label (*edges)[2];
-    label nFaces;
-    const label (*faces)[4];
-};
-
-const shapeTable tables[] =
-{
-    {1, segmentEdges, 2, segmentFaces},
-    {3, triEdges, 3, triFaces},
-    {4, quadEdges, 4, quadFaces},
-    {6, tetEdges, 4, tetFaces},
-    {12, hexEdges, 6, hexFaces}
-};
-
-} // End anonymous namespace
-
-
 using namespace Foam::mpmMeshShapes;
 
 
@@ -76,6 +25,29 @@ const char* Foam::mpmMeshView::shapeName(shapeType s)
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::mpmMeshView::vertexCells
+(
+    labelList& start,
+    labelList& cells
+) const
+{
+    const label nV = vertices_.size();
+    start.setSize(nV + 1);
+    start = Zero;
+    for (const label v : cellVertices_) ++start[v + 1];
+    for (label v = 0; v < nV; ++v) start[v + 1] += start[v];
+    cells.setSize(start[nV]);
+    labelList fill(SubList<label>(start, nV));
+    for (label c = 0; c < shapes_.size(); ++c)
+    {
+        for (label i = cellStart_[c]; i < cellStart_[c + 1]; ++i)
+        {
+            cells[fill[cellVertices_[i]]++] = c;
+        }
+    }
+}
+
 
 void Foam::mpmMeshView::build()
 {
@@ -91,21 +63,8 @@ void Foam::mpmMeshView::build()
         bbMax_ = max(bbMax_, v);
     }
 
-    // Vertex -> cells (compressed rows)
-    labelList vcStart(nV + 1, Zero);
-    for (const label v : cellVertices_) ++vcStart[v + 1];
-    for (label v = 0; v < nV; ++v) vcStart[v + 1] += vcStart[v];
-    labelList vcCells(vcStart[nV]);
-    {
-        labelList fill(SubList<label>(vcStart, nV));
-        for (label c = 0; c < nC; ++c)
-        {
-            for (label i = cellStart_[c]; i < cellStart_[c + 1]; ++i)
-            {
-                vcCells[fill[cellVertices_[i]]++] = c;
-            }
-        }
-    }
+    labelList vcStart, vcCells;
+    vertexCells(vcStart, vcCells);
 
     auto cellHas = [&](const label c, const label v)
     {

@@ -120,6 +120,7 @@ Foam::mpmParallel::mpmParallel(const polyMesh& mesh)
     forAll(bnd, i) boundary[i] = bnd[i] > 0.5;
     view_->setVertexData(h, hMax, boundary);
     view_->setSharedMax([this](UList<scalar>& f) { maxShared(f); });
+    view_->setGlobalRingReach([this]() { return globalRingReach(); });
 
     Info<< "MPM parallel grid on " << Pstream::nProcs() << " ranks: per rank"
         << " (largest) " << returnReduce(nOwnedCells_, maxOp<label>())
@@ -140,6 +141,106 @@ Foam::mpmParallel::mpmParallel(const polyMesh& mesh)
 void Foam::mpmParallel::maxShared(UList<scalar>& values) const
 {
     combineShared(values, maxOp<scalar>(), nullptr);
+}
+
+
+Foam::scalarList Foam::mpmParallel::globalRingReach() const
+{
+    // Each rank's own cells (shape, global vertex numbers) and the
+    // positions of their vertices, gathered on the master, which builds
+    // the whole mesh's view once and answers every rank at its vertices
+    const mpmMeshView& v = view_();
+    const label me = Pstream::myProcNo();
+    List<labelList> shapes(Pstream::nProcs());
+    List<labelList> cellGlobal(Pstream::nProcs());
+    List<List<vector>> cellPoints(Pstream::nProcs());
+    List<labelList> asked(Pstream::nProcs());
+    {
+        labelList& s = shapes[me];
+        labelList& g = cellGlobal[me];
+        List<vector>& x = cellPoints[me];
+        s.setSize(nOwnedCells_);
+        const label nCV = v.cellBegin(nOwnedCells_);
+        g.setSize(nCV);
+        x.setSize(nCV);
+        for (label c = 0; c < nOwnedCells_; ++c)
+        {
+            s[c] = v.shape(c);
+            for (label i = v.cellBegin(c); i < v.cellEnd(c); ++i)
+            {
+                g[i] = globalVertex_[v.cellVertices()[i]];
+                x[i] = v.vertices()[v.cellVertices()[i]];
+            }
+        }
+        asked[me] = globalVertex_;
+    }
+    Pstream::gatherList(shapes);
+    Pstream::gatherList(cellGlobal);
+    Pstream::gatherList(cellPoints);
+    Pstream::gatherList(asked);
+
+    scalarList mine;
+    if (Pstream::master())
+    {
+        Map<label> index;
+        DynamicList<vector> points;
+        DynamicList<mpmMeshView::shapeType> allShapes;
+        DynamicList<label> start(1, label(0));
+        DynamicList<label> cellVertices;
+        forAll(shapes, p)
+        {
+            label i = 0;
+            for (const label s : shapes[p])
+            {
+                const label n =
+                    mpmMeshView::nShapeVertices(mpmMeshView::shapeType(s));
+                for (label k = 0; k < n; ++k, ++i)
+                {
+                    const label g = cellGlobal[p][i];
+                    if (!index.found(g))
+                    {
+                        index.insert(g, points.size());
+                        points.append(cellPoints[p][i]);
+                    }
+                    cellVertices.append(index[g]);
+                }
+                allShapes.append(mpmMeshView::shapeType(s));
+                start.append(cellVertices.size());
+            }
+        }
+        const mpmMeshView whole
+        (
+            v.dim(), v.axes(), points, allShapes, start, cellVertices
+        );
+        const scalarList reach(whole.ringReach());
+        forAll(asked, p)
+        {
+            scalarList answer(asked[p].size(), GREAT);
+            forAll(answer, j)
+            {
+                const auto it = index.cfind(asked[p][j]);
+                if (it.found()) answer[j] = reach[*it];
+            }
+            if (p == 0)
+            {
+                mine.transfer(answer);
+            }
+            else
+            {
+                OPstream toRank(Pstream::commsTypes::scheduled, p);
+                toRank << answer;
+            }
+        }
+    }
+    else
+    {
+        IPstream fromMaster
+        (
+            Pstream::commsTypes::scheduled, Pstream::masterNo()
+        );
+        fromMaster >> mine;
+    }
+    return mine;
 }
 
 

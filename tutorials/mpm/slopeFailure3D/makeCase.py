@@ -19,7 +19,8 @@ gmshToFoam yourself: see Allrun): structured=1 the cubes h cut into 6
 tetrahedra each (the vertices of the bspline2 mesh), structured=0 gmsh's
 unstructured tetrahedra of size tet*h; support: the umls kernel's
 supportSize (mean or maxEdge edge of the vertex, or graded: the sizing
-field over the longest edges); step: mpmProperties' stepLength (vertex:
+field over the longest edges; ring: mlsRing on the ring reach with the
+weights' own gradient and the adaptive profile instead); step: mpmProperties' stepLength (vertex:
 the shortest mean edge sets the step; kernel: the narrowest umls
 support).  kernel bspline2: a
 blockMesh of cubes h.  Particles on a lattice of spacing h/2, the same in both:
@@ -96,10 +97,16 @@ divSchemes { default none; } laplacianSchemes { default none; }
 interpolationSchemes { default linear; } snGradSchemes { default none; }
 ''')
 w('system/fvSolution', 'fvSolution', '\n')
+kernel = a['kernel']
 support = ('\nsupportSize ' + a['support'] + ';  // h_v of the umls kernel: mean, maxEdge or graded'
            if a['kernel'] == 'umls' else '')
+if a['kernel'] == 'umls' and a['support'] == 'ring':
+    # mlsRing on the ring reach with the weights' own gradient (no eta)
+    kernel = 'mlsRing'
+    support = ('\nsupportSize ring;\ngradient    derivative;\n'
+               'sampleWeight adaptive;')
 w('constant/mpmProperties', 'mpmProperties', f'''
-kernel      {a["kernel"]};{support}
+kernel      {kernel};{support}
 updateScheme {a["update"]};
 transfer    {a["transfer"]};
 flipRatio   {a["flip"]:g};
