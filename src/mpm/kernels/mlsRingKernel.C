@@ -247,27 +247,37 @@ struct ringSamples
                 }
                 e = max(e, scalar(0));
             }
-            const scalar r = std::sqrt(r2);
-            const scalar rho = r/hv[v];
-            const scalar ds = e*
-            (
-                profile == 0 ? Foam::mlsRingKernel::bSpline(rho)
-              : profile == 1 ? Foam::mlsRingKernel::cubicSpline(rho)
-              : Foam::mlsRingKernel::bump(rho, power[v])
-            );
+            // The bump needs r^2 only; the B-splines r/h_v
+            scalar ds, r = 0, rho = 0, t = 0, R2 = 0;
+            if (profile == 2)
+            {
+                R2 = sqr(1.5*hv[v]);
+                t = 1 - r2/R2;
+                ds = e*Foam::mlsRingKernel::bumpOf(t, power[v]);
+            }
+            else
+            {
+                r = std::sqrt(r2);
+                rho = r/hv[v];
+                ds = e*
+                (
+                    profile == 0
+                  ? Foam::mlsRingKernel::bSpline(rho)
+                  : Foam::mlsRingKernel::cubicSpline(rho)
+                );
+            }
             if (ds == 0) continue;
 
             if (sdd)
             {
                 // e grad N = -e N'(r/h)/(h r) P, finite at r = 0:
                 // quadratic 2e/h^2 inside r < h/2; cubic N3(s), s = k r,
-                // k = 4/(3h): e k^2 (2 - 1.5 s) inside s < 1
+                // k = 4/(3h): e k^2 (2 - 1.5 s) inside s < 1; the bump
+                // t^k, t = 1 - r^2/R^2: 2k e t^(k-1)/R^2
                 scalar c;
                 if (profile == 2)
                 {
-                    // (1 - q^2)^k, q = rho/1.5: 2k e (1 - q^2)^(k-1)/(1.5 h)^2
-                    const scalar t = 1 - sqr(rho/1.5);
-                    c = 2*power[v]*ds/(t*sqr(1.5*hv[v]));
+                    c = 2*power[v]*ds/(t*R2);
                 }
                 else if (profile == 1)
                 {
@@ -438,7 +448,9 @@ void Foam::mlsRingKernel::computeDim
     scalar* __restrict__ sd = sampleD_.data();
     scalar* __restrict__ sx = sampleDx_.data();
     scalar* __restrict__ sdd = gradient_ == 0 ? nullptr : sampleDD_.data();
-    const bool etaGradient = gradient_ == 2;
+    // eta's gradient (gradient derivative with eta) needs grad B; without
+    // eta (mlsRing) the cell's shape functions are not needed at all
+    const bool etaGradient = gradient_ == 2 && diminish_;
 
     mpmMeshView::shapeValues sv;
     label k = 0;
@@ -451,9 +463,13 @@ void Foam::mlsRingKernel::computeDim
         {
             mesh_.shapeFunctions(c, xp, sv);
         }
-        else
+        else if (diminish_)
         {
             mesh_.shapeValuesOnly(c, xp, sv);   // eta needs B only
+        }
+        else
+        {
+            sv.n = mesh_.cellEnd(c) - mesh_.cellBegin(c);
         }
         scalar xpa[D];
         for (label a = 0; a < D; ++a) xpa[a] = xp[ax[a]];
