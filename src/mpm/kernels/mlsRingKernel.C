@@ -84,15 +84,22 @@ scalarList ringSupports(const mpmMeshView& mesh)
 }
 
 
+// The supportSize entry (maxEdge when absent)
+supportSize supportSizeOf(const dictionary& dict)
+{
+    return dictionaryChecks::getEnum
+    (
+        dict, "supportSize", supportSizeNames, supportSize::maxEdge
+    );
+}
+
+
 // h_v of every vertex: its own edges (mean or longest), or the graded
 // sizing field over the longest edges (chapter 5: supports that follow
 // the mesh's sizes smoothly, never narrower than a vertex's own need)
 scalarList supportSizes(const dictionary& dict, const mpmMeshView& mesh)
 {
-    const supportSize s = dictionaryChecks::getEnum
-    (
-        dict, "supportSize", supportSizeNames, supportSize::maxEdge
-    );
+    const supportSize s = supportSizeOf(dict);
     if (s == supportSize::mean) return mesh.vertexSize();
     if (s == supportSize::maxEdge) return mesh.vertexMaxEdge();
     if (s == supportSize::ring) return ringSupports(mesh);
@@ -348,11 +355,7 @@ Foam::mlsRingKernel::mlsRingKernel
             )
         )
     ),
-    ringSupports_
-    (
-        dict.found("supportSize")
-     && dict.get<word>("supportSize") == "ring"
-    ),
+    ringSupports_(supportSizeOf(dict) == supportSize::ring),
     h_(supportSizes(dict, mesh)),
     support2_(h_.size()),
     rings_(mesh),
