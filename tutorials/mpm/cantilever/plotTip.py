@@ -38,7 +38,7 @@ fig, ax = plt.subplots(figsize=(8, 5))
 for c in cases:
     t, d = tip(c)
     m = meanOverPeriods(t, d)
-    line = (f"{label(c)}: mean tip deflection {m:.4f} m, "
+    line = (f"{label(c)}: mean tip deflection {m:.5f} m, "
             f"{100*(m/static - 1):+.2f} % from the static Timoshenko {static} m; "
             f"largest {d.max():.4f} m")
     if c != cases[0]:
