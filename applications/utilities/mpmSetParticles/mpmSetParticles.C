@@ -567,8 +567,13 @@ int main(int argc, char *argv[])
             allowed << "regions inside the mesh, bounds " << mesh.bounds();
             badEntry(d, "type", found.str(), allowed.str());
         }
+        // The fill goes in the line too: an empty region is often a
+        // spacing larger than the region
         placements << nl << "        " << e.keyword() << ": "
-            << r.placement();
+            << r.placement() << ", "
+            << (hasSpacing
+                ? "spacing " + Foam::name(d.get<scalar>("spacing"))
+                : "perCell " + Foam::name(d.get<label>("perCell"))).c_str();
         if (P.size() == before)
         {
             WarningInFunction
