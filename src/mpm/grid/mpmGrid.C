@@ -8,6 +8,7 @@
 Foam::mpmGrid::mpmGrid(const label nVertices)
 :
     mass(nVertices, Zero),
+    absMass(nVertices, Zero),
     velocity(nVertices, Zero),
     force(nVertices, Zero),
     newVelocity(nVertices, Zero),
@@ -20,6 +21,7 @@ void Foam::mpmGrid::activate(const kernelWeights& kw)
     for (const label i : active)
     {
         mass[i] = 0;
+        absMass[i] = 0;
         velocity[i] = Zero;
         force[i] = Zero;
         newVelocity[i] = Zero;

@@ -27,6 +27,19 @@ void Foam::mpmSolver::readSettings(const dictionary& dict)
         badEntry(dict, "CFL", Foam::name(CFL_), "a number 0 < CFL <= 1");
     }
     maxDeltaT_ = getPositive(dict, "maxDeltaT", 1e30);
+    massCancellation_ =
+        kernel_->nonNegativeWeights()
+      ? 0
+      : getAsOrDefault<scalar>
+        (
+            dict, "massCancellation", kernel_->defaultMassCancellation(),
+            "a number 0 <= massCancellation <= 1"
+        );
+    if (!(massCancellation_ >= 0 && massCancellation_ <= 1))
+    {
+        badEntry(dict, "massCancellation", Foam::name(massCancellation_),
+            "a number 0 <= massCancellation <= 1");
+    }
     maxSteps_ = getInRange(dict, "maxSteps", 1e9, 0, 1e15);
 
     // The length of CFL h/c: the shortest vertex size (mean edge), or the
@@ -216,6 +229,7 @@ Foam::mpmSolver::mpmSolver
     CFL_(0.5),
     maxDeltaT_(1e30),
     maxSteps_(1e9),
+    massCancellation_(0),
     musl_(false),
     hMin_(0),   // set by readSettings
     grid_(mesh.nVertices()),
@@ -686,18 +700,22 @@ void Foam::mpmSolver::gridUpdate(const mpmParticles& P, const scalar dt)
 
     // 3.-5. Internal (2.8) and gravity (2.9) forces
     const bool gravity = magSqr(gravity_) > 0;
+    const bool cancelling = massCancellation_ > 0;
     for (label p = 0; p < nP; ++p)
     {
         const symmTensor Vs = P.V[p]*P.sigma[p];
         const vector mg = P.m[p]*gravity_;
+        const scalar mp = P.m[p];
         for (label k = kw_.start[p]; k < kw_.start[p + 1]; ++k)
         {
             const label i = kw_.vertex[k];
             vector f = grid_.force[i] - (Vs & kw_.gradW[k]);
             if (gravity) f += kw_.w[k]*mg;
             grid_.force[i] = f;
+            if (cancelling) grid_.absMass[i] += mag(kw_.w[k])*mp;
         }
     }
+    if (cancelling && par_) par_->sumShared(grid_.absMass, &grid_.isActive);
     // Barrier contact forces (external particle forces, by the weights)
     if (contact_)
     {
@@ -725,7 +743,7 @@ void Foam::mpmSolver::gridUpdate(const mpmParticles& P, const scalar dt)
     const scalar tiny = VSMALL;
     for (const label i : grid_.active)
     {
-        const scalar m = grid_.mass[i];
+        const scalar m = updateMass(i);
         if (mag(m) > tiny)
         {
             grid_.newVelocity[i] =
@@ -873,7 +891,7 @@ bool Foam::mpmSolver::endStep(mpmParticles& P, const scalar dt)
         if (par_) par_->sumShared(grid_.force, &grid_.isActive);
         for (const label i : grid_.active)
         {
-            const scalar m = grid_.mass[i];
+            const scalar m = updateMass(i);
             grid_.force[i] = mag(m) > tiny ? mesh_.inPlane(grid_.force[i]/m) : Zero;
         }
         boundary_.apply(grid_.isActive, grid_.force);
