@@ -704,8 +704,8 @@ void Foam::mpmSolver::gridUpdate(const mpmParticles& P, const scalar dt)
     for (label p = 0; p < nP; ++p)
     {
         const symmTensor Vs = P.V[p]*P.sigma[p];
-        const vector mg = P.m[p]*gravity_;
         const scalar mp = P.m[p];
+        const vector mg = mp*gravity_;
         for (label k = kw_.start[p]; k < kw_.start[p + 1]; ++k)
         {
             const label i = kw_.vertex[k];
