@@ -362,3 +362,85 @@ TEST(kernelGradient, ringSupportsSmoothAndConsistent)
         }
     }
 }
+
+
+// linearBlend: where the ring reach leaves the moments degenerate
+// (stretched quadrilaterals: fewer than dim + 1 vertices within reach),
+// the kernel stops without it and blends into the cell's linear shape
+// functions with it: at a singular point the weights are the linear ones;
+// everywhere the identities hold, the weights stay continuous across
+// faces and their gradient is their derivative, the blend's share
+// included (linearBlend 0.5 blends wide zones of the tetrahedra too)
+TEST(kernelGradient, linearBlendWhereMomentsDegenerate)
+{
+    auto m = testMeshes::plane(8, true, 0, 1.3);
+    const std::string ring =
+        "supportSize ring; gradient derivative; sampleWeight adaptive; ";
+    const scalar lo = m->bbMin().x() + 1e-3, hi = m->bbMax().x() - 1e-3;
+    const std::vector<vector> pts = samples(2, lo, hi, 400, 17);
+
+    // Without the blend: stops at some point, saying what to do
+    vector singular(vector::max);
+    {
+        auto k = kernel("mlsRing", *m, ring + "linearBlend 0;");
+        FatalError.throwExceptions();
+        for (const vector& x : pts)
+        {
+            try
+            {
+                evaluate(*k, x);
+            }
+            catch (const Foam::error& e)
+            {
+                const std::string msg = e.message();
+                EXPECT_NE(msg.find("linearBlend"), std::string::npos) << msg;
+                singular = x;
+                break;
+            }
+        }
+        FatalError.dontThrowExceptions();
+    }
+    ASSERT_LT(singular.x(), GREAT) << "no singular moment matrix found";
+
+    // With it (ring supports' default): the cell's linear weights there
+    auto k = kernel("mlsRing", *m, ring);
+    auto lin = kernel("linear", *m);
+    const weightsAt a = evaluate(*k, singular), b = evaluate(*lin, singular);
+    const auto j = jump(a, b);
+    std::cout << "  stretched quadrilaterals: singular at " << singular
+        << ", blended weights differ from the linear ones by " << j.first
+        << std::endl;
+    EXPECT_LT(j.first, 1e-12);
+
+    scalar worst = 0;
+    for (const vector& x : pts)
+    {
+        checkIdentities(*k, x, "stretched quadrilaterals, linearBlend");
+        worst = max(worst, derivativeMismatch(*k, x));
+    }
+    const crossings c = crossAtVertices(*k);
+    std::cout << "  |grad w - finite difference| / |grad w| up to " << worst
+        << "; " << c.n << " crossings, largest jump of w " << c.w
+        << std::endl;
+    EXPECT_LT(worst, 1e-5);
+    EXPECT_GT(c.n, 0);
+    EXPECT_LT(c.w, 1e-4);
+
+    // Wide blend zones on the perturbed tetrahedra: the derivative
+    // includes grad s (without it the mismatch is of order 1)
+    auto t = testMeshes::box(5, false, 0.2);
+    auto kt = kernel("mlsRing", *t, ring + "linearBlend 0.5;");
+    auto k0 = kernel("mlsRing", *t, ring + "linearBlend 0;");
+    scalar worstT = 0, changed = 0;
+    for (const vector& x : samples(3, 1.2, 3.8, 60, 19))
+    {
+        checkIdentities(*kt, x, "3D tets, linearBlend 0.5");
+        worstT = max(worstT, derivativeMismatch(*kt, x));
+        changed = max(changed, jump(evaluate(*kt, x), evaluate(*k0, x)).first);
+    }
+    std::cout << "  3D tets, linearBlend 0.5: weights changed by up to "
+        << changed << ", |grad w - finite difference| / |grad w| up to "
+        << worstT << std::endl;
+    EXPECT_GT(changed, 1e-2);
+    EXPECT_LT(worstT, 1e-5);
+}

@@ -352,6 +352,7 @@ int main(int argc, char *argv[])
         << (wall > 0 ? scalar(nTotal)*steps/wall : 0) << " ("
         << steps << " steps, " << nTotal << " particles, " << wall
         << " s)" << nl;
+    solver.kernel().report();
     const scalar cpu = runTime.elapsedCpuTime() - cpu0;
     Info<< "Time loop CPU: " << returnReduce(cpu, maxOp<scalar>()) << " s";
     if (par.valid())

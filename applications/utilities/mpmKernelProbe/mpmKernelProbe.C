@@ -263,6 +263,7 @@ int main(int argc, char *argv[])
 
         kernelWeights kw;
         kernel->compute(pts, cells, kw);
+        kernel->report();
 
         const fileName outFile(outDir/(kernelName + ".dat"));
         OFstream os(outFile);

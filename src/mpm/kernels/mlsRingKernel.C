@@ -5,6 +5,7 @@
 
 #include "mlsRingKernel.H"
 #include "mlsMoments.H"
+#include "ringSamples.H"
 #include "addToRunTimeSelectionTable.H"
 #include "dictionaryChecks.H"
 #include "Pstream.H"
@@ -121,206 +122,92 @@ scalarList supportSizes(const dictionary& dict, const mpmMeshView& mesh)
         << " times the vertex's own" << endl;
     return h;
 }
-
-// The three edge neighbours in a hexahedron of its vertex i (ascending),
-// and the adjacency mask of that vertex in its own cell's ring: itself
-// and those three
-constexpr unsigned char hexOthers[8][3] =
+// The linearBlend entry: on by default for ring supports only, whose reach
+// can leave fewer than dim + 1 vertices near a point (3D tetrahedra next to
+// a wall); in [0, 0.5]
+scalar linearBlendOf(const dictionary& dict, const bool ringSupports)
 {
-    {1, 3, 4}, {0, 2, 5}, {1, 3, 6}, {0, 2, 7},
-    {0, 5, 7}, {1, 4, 6}, {2, 5, 7}, {3, 4, 6}
-};
-
-constexpr unsigned hexMask(const label i)
-{
-    return (1u << i) | (1u << hexOthers[i][0]) | (1u << hexOthers[i][1])
-      | (1u << hexOthers[i][2]);
+    const string allowed("a number 0 <= linearBlend <= 0.5");
+    const scalar kappa1 = dictionaryChecks::getAsOrDefault<scalar>
+    (
+        dict, "linearBlend", ringSupports ? 3e-2 : 0, allowed
+    );
+    if (!(kappa1 >= 0 && kappa1 <= 0.5))
+    {
+        dictionaryChecks::badEntry
+        (
+            dict, "linearBlend", Foam::name(kappa1), allowed
+        );
+    }
+    return kappa1;
 }
 
-const unsigned hexCellMask[8] =
-{
-    hexMask(0), hexMask(1), hexMask(2), hexMask(3),
-    hexMask(4), hexMask(5), hexMask(6), hexMask(7)
-};
 
-
-// The samples of one particle over its cell's ring: the ring vertices
-// inside their support, with d_vp = eta_vp N(r/h_v) (eta only with
-// diminish) and the offsets x_v - x_p.  Compiled per number NV of the
-// cell's vertices, so that the loops over them unroll.
+// (2.22) [w_vp, grad w_vp] = d_vp M^-1 [1 P_v] of the samples, written at
+// out[k, k + ns); with dd (gradient heldEta, derivative) the gradient is
+// the weights' derivative: + dd_v alpha_v - d_v T q_v (derivativeTerms)
 template<int D>
-struct ringSamples
+inline void mlsWeights
+(
+    const label ns,
+    const label* __restrict__ sv,
+    const scalar* __restrict__ sd,
+    const scalar* __restrict__ sx,
+    const scalar* __restrict__ sdd,
+    const scalar Minv[4][4],
+    const label ax[3],
+    label* __restrict__ vOut,
+    scalar* __restrict__ wOut,
+    vector* __restrict__ gOut,
+    label& k
+)
 {
-    const bool diminish;
-    //- Sample weight profile: 0 quadratic, 1 cubic B-spline, 2 the bump
-    //  (1 - q^2)^k_v, k_v = power[v]
-    const int profile;
-    const label* power;
-    const scalar* B;            //!< shape values of the cell's vertices
-    const label* ringVertex;    //!< the ring (cell vertices first)
-    const unsigned char* ringAdj;
-    const vector* vx;
-    const label* ax;
-    const scalar* xpa;
-    const scalar* support2;
-    const scalar* h;
-    label* __restrict__ sv;
-    scalar* __restrict__ sd;
-    scalar* __restrict__ sx;
-    //- Where not null: grad_xp d_s (D per sample), with eta held or, where
-    //  gradB is not null, with eta's own gradient
-    scalar* __restrict__ sdd;
-    const vector* gradB;
+    constexpr label n = D + 1;
+    // The transpose makes the sums over j contiguous: vectorised
+    scalar MinvT[n][n];
+    for (label i = 0; i < n; ++i)
+        for (label j = 0; j < n; ++j) MinvT[j][i] = Minv[i][j];
 
-    // (2.29) eta_vp = sum_{n in N0} B_np A_vn, the set bits of the mask
-    // visited lowest first (the sums of a scan over the cell's vertices);
-    // subset sums when NV <= 4
-    template<int NV>
-    label gather(const label nRing) const
+    scalar T[D][n] = {{0}};
+    if (sdd) derivativeTerms<D>(ns, sdd, sx, Minv, T);
+
+    for (label s = 0; s < ns; ++s)
     {
-        scalar subset[16];
-        if (NV <= 4 && diminish)
+        const scalar* P = sx + D*s;
+        scalar q[n];
+        for (label i = 0; i < n; ++i) q[i] = MinvT[0][i];
+        for (label j = 0; j < D; ++j)
         {
-            subset[0] = 0;
-            for (label i = 0; i < NV; ++i)
+            for (label i = 0; i < n; ++i) q[i] += MinvT[j + 1][i]*P[j];
+        }
+        const scalar ds = sd[s];
+        scalar g[D];
+        for (label a = 0; a < D; ++a) g[a] = ds*q[a + 1];
+        if (sdd)
+        {
+            for (label a = 0; a < D; ++a)
             {
-                const label m0 = 1 << i;
-                for (label m = 0; m < m0; ++m) subset[m0 + m] = subset[m] + B[i];
+                scalar Tq = 0;
+                for (label i = 0; i < n; ++i) Tq += T[a][i]*q[i];
+                g[a] += sdd[D*s + a]*q[0] - ds*Tq;
             }
         }
-
-        // Locals: the stores below cannot change them
-        scalar xp[D];
-        label axis[D];
-        for (label a = 0; a < D; ++a)
+        vOut[k] = sv[s];
+        wOut[k] = ds*q[0];
+        if (D == 3)
         {
-            xp[a] = xpa[a];
-            // The axes of a 3D view are x, y, z (checked at construction)
-            axis[a] = (D == 3) ? a : ax[a];
+            // The solution axes of a 3D mesh are x, y, z
+            gOut[k] = vector(g[0], g[1], g[2]);
         }
-        const label* __restrict__ ring = ringVertex;
-        const unsigned char* __restrict__ adj = ringAdj;
-        const vector* __restrict__ xv = vx;
-        const scalar* __restrict__ s2 = support2;
-        const scalar* __restrict__ hv = h;
-        label* __restrict__ svOut = sv;
-        scalar* __restrict__ sdOut = sd;
-        scalar* __restrict__ sxOut = sx;
-
-        label ns = 0;
-        for (label s = 0; s < nRing; ++s)
+        else
         {
-            const label v = ring[s];
-            scalar P[D];
-            for (label a = 0; a < D; ++a) P[a] = xv[v][axis[a]] - xp[a];
-            // |P|^2 summed from the first axis (no leading 0 +: the same
-            // sum, one add fewer)
-            scalar r2 = P[0]*P[0];
-            for (label a = 1; a < D; ++a) r2 += P[a]*P[a];
-            // Outside the support: d = 0 (support2 has slack for round-off)
-            if (r2 >= s2[v]) continue;
-
-            scalar e = 1;
-            if (diminish)
-            {
-                const unsigned mask = adj[s];
-                if (NV == 8 && s < NV && mask == hexCellMask[s])
-                {
-                    // A vertex of a hexahedron and its three neighbours
-                    // in it: the sum below, unrolled
-                    const unsigned char* o = hexOthers[s];
-                    e = B[s] + B[o[0]] + B[o[1]] + B[o[2]];
-                }
-                else if (s < NV)
-                {
-                    // A cell vertex: its own B first, then the others
-                    e = B[s];
-                    for (unsigned m = mask & ~(1u << s); m; m &= m - 1)
-                    {
-                        e += B[__builtin_ctz(m)];
-                    }
-                }
-                else if (NV <= 4)
-                {
-                    e = subset[mask];
-                }
-                else
-                {
-                    e = 0;
-                    for (unsigned m = mask; m; m &= m - 1)
-                    {
-                        e += B[__builtin_ctz(m)];
-                    }
-                }
-                e = max(e, scalar(0));
-            }
-            // The bump needs r^2 only; the B-splines r/h_v
-            scalar ds, r = 0, rho = 0, t = 0, R2 = 0;
-            if (profile == 2)
-            {
-                R2 = sqr(1.5*hv[v]);
-                t = 1 - r2/R2;
-                ds = e*Foam::mlsRingKernel::bumpOf(t, power[v]);
-            }
-            else
-            {
-                r = std::sqrt(r2);
-                rho = r/hv[v];
-                ds = e*
-                (
-                    profile == 0
-                  ? Foam::mlsRingKernel::bSpline(rho)
-                  : Foam::mlsRingKernel::cubicSpline(rho)
-                );
-            }
-            if (ds == 0) continue;
-
-            if (sdd)
-            {
-                // e grad N = -e N'(r/h)/(h r) P, finite at r = 0:
-                // quadratic 2e/h^2 inside r < h/2; cubic N3(s), s = k r,
-                // k = 4/(3h): e k^2 (2 - 1.5 s) inside s < 1; the bump
-                // t^k, t = 1 - r^2/R^2: 2k e t^(k-1)/R^2
-                scalar c;
-                if (profile == 2)
-                {
-                    c = 2*power[v]*ds/(t*R2);
-                }
-                else if (profile == 1)
-                {
-                    const scalar k = 4/(3*hv[v]);
-                    const scalar s = k*r;
-                    c = s < 1 ? e*k*k*(2 - 1.5*s) : e*k*sqr(2 - s)/(2*r);
-                }
-                else
-                {
-                    c = rho < 0.5
-                        ? 2*e/(hv[v]*hv[v])
-                        : e*(1.5 - rho)/(hv[v]*r);
-                }
-                for (label a = 0; a < D; ++a) sdd[D*ns + a] = c*P[a];
-                if (gradB && diminish && e > 0)
-                {
-                    // + N grad eta, grad eta = sum over the mask of grad B
-                    const scalar Nv = ds/e;
-                    for (unsigned m = adj[s]; m; m &= m - 1)
-                    {
-                        const vector& gB = gradB[__builtin_ctz(m)];
-                        for (label a = 0; a < D; ++a)
-                        {
-                            sdd[D*ns + a] += Nv*gB[axis[a]];
-                        }
-                    }
-                }
-            }
-            svOut[ns] = v;
-            sdOut[ns] = ds;
-            for (label a = 0; a < D; ++a) sxOut[D*ns + a] = P[a];
-            ++ns;
+            vector& gk = gOut[k];
+            gk = Zero;
+            for (label a = 0; a < D; ++a) gk[ax[a]] = g[a];
         }
-        return ns;
+        ++k;
     }
-};
+}
 
 } // End anonymous namespace
 
@@ -358,6 +245,9 @@ Foam::mlsRingKernel::mlsRingKernel
     ringSupports_(supportSizeOf(dict) == supportSize::ring),
     h_(supportSizes(dict, mesh)),
     support2_(h_.size()),
+    linearBlend_(linearBlendOf(dict, ringSupports_)),
+    nEvaluated_(0),
+    nBlended_(0),
     rings_(mesh),
     sampleVertex_(rings_.maxSize),
     sampleD_(rings_.maxSize),
@@ -458,6 +348,7 @@ void Foam::mlsRingKernel::computeDim
     mpmMeshView::shapeValues sv;
     label k = 0;
     out.start[0] = 0;
+    nEvaluated_ += nP;
     for (label p = 0; p < nP; ++p)
     {
         const label c = cells[p];
@@ -499,11 +390,13 @@ void Foam::mlsRingKernel::computeDim
         momentMatrix<D>(ns, sd, sx, M);
 
         scalar Minv[4][4] = {{0}};
-        const scalar conditioning =
+        const scalar kappa =
             (n == 3) ? invertMoment3(M, Minv)
           : (n == 4) ? invertMoment4(M, Minv)
-          : invertMoment(n, M, Minv);
-        if (conditioning < 1e-12)
+          : (invertMoment(n, M, Minv) > 0 ? conditioning2(M) : 0);
+        scalar dsdl = 0;
+        const scalar share = linearShare(kappa, linearBlend_, dsdl);
+        if (share == 0 && kappa < 1e-12)
         {
             FatalErrorInFunction
                 << type() << " kernel: the moment matrix of the particle at "
@@ -512,63 +405,92 @@ void Foam::mlsRingKernel::computeDim
                 << (ringSupports_
                   ? ": with supportSize ring, the ring reach leaves fewer "
                     "than dim + 1 vertices around this point (stretched "
-                    "cells); umls (eta) or supportSize maxEdge runs there"
-                  : "")
+                    "cells); a linearBlend > 0 blends into the cell's "
+                    "linear weights there"
+                  : "; a linearBlend > 0 blends into the cell's linear "
+                    "weights there")
                 << exit(FatalError);
         }
 
-        // [w_vp, grad w_vp] = d_vp M^-1 P_v, column by column (the
-        // transpose makes the sums over j contiguous: vectorised)
-        scalar MinvT[n][n];
-        for (label i = 0; i < n; ++i)
-            for (label j = 0; j < n; ++j) MinvT[j][i] = Minv[i][j];
-
-        // gradient heldEta, derivative: T_a = sum_u dd_u,a alpha_u [1, P_u],
-        // alpha_u = (M^-1 [1, P_u])_0 (see derivativeTerms)
-        scalar T[D][n];
-        if (sdd) derivativeTerms<D>(ns, sdd, sx, Minv, T);
-
-        for (label s = 0; s < ns; ++s)
+        const label k0 = k;
+        if (share < 1)
         {
-            const scalar* P = sx + D*s;
-            scalar q[n];
-            for (label i = 0; i < n; ++i) q[i] = MinvT[0][i];
-            for (label j = 0; j < D; ++j)
+            mlsWeights<D>
+            (
+                ns, sv_, sd, sx, sdd, Minv, ax, vOut, wOut, gOut, k
+            );
+        }
+        if (share > 0)
+        {
+            scalar gradLogKappa[D] = {0};
+            if (sdd && dsdl != 0)
             {
-                for (label i = 0; i < n; ++i) q[i] += MinvT[j + 1][i]*P[j];
+                logConditioningGradient<D>
+                (
+                    ns, sd, sdd, sx, M, Minv, gradLogKappa
+                );
             }
-            const scalar ds = sd[s];
-            scalar g[D];
-            for (label a = 0; a < D; ++a) g[a] = ds*q[a + 1];
-            if (sdd)
+            vector gradShare = Zero;
+            for (label a = 0; a < D; ++a)
             {
-                for (label a = 0; a < D; ++a)
-                {
-                    scalar Tq = 0;
-                    for (label i = 0; i < n; ++i) Tq += T[a][i]*q[i];
-                    g[a] += sdd[D*s + a]*q[0] - ds*Tq;
-                }
+                gradShare[ax[a]] = dsdl*gradLogKappa[a];
             }
-            vOut[k] = sv_[s];
-            wOut[k] = ds*q[0];
-            if (D == 3)
-            {
-                // The solution axes of a 3D mesh are x, y, z
-                gOut[k] = vector(g[0], g[1], g[2]);
-            }
-            else
-            {
-                vector& gk = gOut[k];
-                gk = Zero;
-                for (label a = 0; a < D; ++a) gk[ax[a]] = g[a];
-            }
-            ++k;
+            blendLinear
+            (
+                c, xp, ringVertex.cdata() + rb, share, gradShare, k0,
+                vOut, wOut, gOut, k
+            );
+            ++nBlended_;
         }
         out.start[p + 1] = k;
     }
     out.vertex.setSize(k);
     out.w.setSize(k);
     out.gradW.setSize(k);
+}
+
+
+// Where the moment matrix is ill-conditioned: the weights [k0, k) blend
+// into the cell's linear shape functions N, w = (1 - s) w + s N and
+// grad w = (1 - s) grad w + s grad N + (N - w) grad s.  Both reproduce
+// linear fields, so the blend does, with its gradient's identities.
+void Foam::mlsRingKernel::blendLinear
+(
+    const label c,
+    const vector& xp,
+    const label* cellVertex,
+    const scalar share,
+    const vector& gradShare,
+    const label k0,
+    label* vOut,
+    scalar* wOut,
+    vector* gOut,
+    label& k
+) const
+{
+    mpmMeshView::shapeValues lin;
+    mesh_.shapeFunctions(c, xp, lin);
+    for (label j = k0; j < k; ++j)
+    {
+        gOut[j] = (1 - share)*gOut[j] - wOut[j]*gradShare;
+        wOut[j] *= 1 - share;
+    }
+    // The ring lists the cell's vertices first, in the cell's order
+    for (label i = 0; i < lin.n; ++i)
+    {
+        const label v = cellVertex[i];
+        label j = k0;
+        while (j < k && vOut[j] != v) ++j;
+        if (j == k)
+        {
+            vOut[k] = v;
+            wOut[k] = 0;
+            gOut[k] = Zero;
+            ++k;
+        }
+        wOut[j] += share*lin.B[i];
+        gOut[j] += share*lin.gradB[i] + lin.B[i]*gradShare;
+    }
 }
 
 
@@ -585,6 +507,19 @@ void Foam::mlsRingKernel::compute
         case 2: computeDim<2>(x, cells, out); break;
         default: computeDim<3>(x, cells, out); break;
     }
+}
+
+
+void Foam::mlsRingKernel::report() const
+{
+    if (linearBlend_ == 0) return;
+    const scalar nAll = returnReduce(scalar(nEvaluated_), sumOp<scalar>());
+    const scalar nBlend = returnReduce(scalar(nBlended_), sumOp<scalar>());
+    Info<< type() << " kernel: " << nBlend << " of " << nAll
+        << " particle evaluations ("
+        << (nAll > 0 ? 100*nBlend/nAll : 0)
+        << " %) blended into linear weights (conditioning below "
+        << linearBlend_ << ")" << endl;
 }
 
 
