@@ -42,6 +42,23 @@ void Foam::mpmSolver::readSettings(const dictionary& dict)
     }
     maxSteps_ = getInRange(dict, "maxSteps", 1e9, 0, 1e15);
 
+    // The F-bar average's weights: the kernel's, or convex (non-negative)
+    // by default where the kernel's weights cancel (ring supports)
+    const word fbarAverage
+    (
+        getAsOrDefault<word>
+        (
+            dict, "FbarAverage",
+            kernel_->defaultMassCancellation() > 0 ? "convex" : "kernel",
+            "kernel or convex"
+        )
+    );
+    if (fbarAverage != "kernel" && fbarAverage != "convex")
+    {
+        badEntry(dict, "FbarAverage", fbarAverage, "kernel or convex");
+    }
+    fbarConvex_ = (fbarAverage == "convex");
+
     // The length of CFL h/c: the shortest vertex size (mean edge), or the
     // kernel's own (for mlsRing and umls the narrowest support h_v)
     const word stepLength
@@ -234,6 +251,7 @@ Foam::mpmSolver::mpmSolver
     hMin_(0),   // set by readSettings
     grid_(mesh.nVertices()),
     anyFbar_(false),
+    fbarConvex_(false),
     inversion_(dict, mesh.offAxes()),
     treatedStep_(0),
     treatedTotal_(0),

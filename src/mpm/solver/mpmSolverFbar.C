@@ -11,6 +11,18 @@
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::scalar Foam::mpmSolver::fbarWeightScale(const label p) const
+{
+    if (!fbarConvex_) return 1;
+    scalar sum = 0;
+    for (label j = kw_.start[p]; j < kw_.start[p + 1]; ++j)
+    {
+        sum += mag(kw_.w[j]);
+    }
+    return sum > 0 ? 1/sum : 0;
+}
+
+
 void Foam::mpmSolver::fbarAverage(const mpmParticles& P, UList<scalar>& f)
 {
     const scalar tiny = VSMALL;
@@ -38,13 +50,15 @@ void Foam::mpmSolver::fbarAverage(const mpmParticles& P, UList<scalar>& f)
         if (!materials_[k].Fbar()) continue;
         for (label p = materialStart_[k]; p < materialStart_[k + 1]; ++p)
         {
+            const scalar r = fbarWeightScale(p);
             const scalar m = P.m[p];
             const scalar mf = m*f[p];
             for (label j = kw_.start[p]; j < kw_.start[p + 1]; ++j)
             {
                 const label i = kw_.vertex[j];
-                fbarMass_[i] += kw_.w[j]*m;
-                fbarSum_[i] += kw_.w[j]*mf;
+                const scalar a = fbarConvex_ ? mag(kw_.w[j])*r : kw_.w[j];
+                fbarMass_[i] += a*m;
+                fbarSum_[i] += a*mf;
             }
         }
     }
@@ -59,13 +73,15 @@ void Foam::mpmSolver::fbarAverage(const mpmParticles& P, UList<scalar>& f)
         if (!materials_[k].Fbar()) continue;
         for (label p = materialStart_[k]; p < materialStart_[k + 1]; ++p)
         {
+            const scalar r = fbarWeightScale(p);
             scalar s = 0;
             for (label j = kw_.start[p]; j < kw_.start[p + 1]; ++j)
             {
                 const label i = kw_.vertex[j];
                 if (mag(fbarMass_[i]) > tiny)
                 {
-                    s += kw_.w[j]*fbarSum_[i]/fbarMass_[i];
+                    const scalar a = fbarConvex_ ? mag(kw_.w[j])*r : kw_.w[j];
+                    s += a*fbarSum_[i]/fbarMass_[i];
                 }
             }
             f[p] = s;
