@@ -145,7 +145,11 @@ scalar linearBlendOf(const dictionary& dict, const bool ringSupports)
 
 // (2.22) [w_vp, grad w_vp] = d_vp M^-1 [1 P_v] of the samples, written at
 // out[k, k + ns); with dd (gradient heldEta, derivative) the gradient is
-// the weights' derivative: + dd_v alpha_v - d_v T q_v (derivativeTerms)
+// the weights' derivative: + dd_v alpha_v - d_v T q_v (derivativeTerms).
+// With q = M^-1 [1 P] (M^-1 symmetric), T q = (T M^-1) [1 P], so each
+// axis's gradient is d (M^-1_{a+1} - (T M^-1)_a) . [1 P] + dd_a q_0: the
+// rows R_a are formed once per particle, one n-vector product per axis
+// and sample
 template<int D>
 inline void mlsWeights
 (
@@ -163,37 +167,45 @@ inline void mlsWeights
 )
 {
     constexpr label n = D + 1;
-    // The transpose makes the sums over j contiguous: vectorised
-    scalar MinvT[n][n];
-    for (label i = 0; i < n; ++i)
-        for (label j = 0; j < n; ++j) MinvT[j][i] = Minv[i][j];
-
-    scalar T[D][n] = {{0}};
-    if (sdd) derivativeTerms<D>(ns, sdd, sx, Minv, T);
+    scalar W[n];
+    for (label i = 0; i < n; ++i) W[i] = Minv[0][i];
+    scalar R[D][n];
+    for (label a = 0; a < D; ++a)
+        for (label i = 0; i < n; ++i) R[a][i] = Minv[a + 1][i];
+    if (sdd)
+    {
+        scalar T[D][n] = {{0}};
+        derivativeTerms<D>(ns, sdd, sx, Minv, T);
+        for (label a = 0; a < D; ++a)
+        {
+            for (label i = 0; i < n; ++i)
+            {
+                scalar u = 0;
+                for (label l = 0; l < n; ++l) u += T[a][l]*Minv[l][i];
+                R[a][i] -= u;
+            }
+        }
+    }
 
     for (label s = 0; s < ns; ++s)
     {
         const scalar* P = sx + D*s;
-        scalar q[n];
-        for (label i = 0; i < n; ++i) q[i] = MinvT[0][i];
-        for (label j = 0; j < D; ++j)
-        {
-            for (label i = 0; i < n; ++i) q[i] += MinvT[j + 1][i]*P[j];
-        }
+        scalar q0 = W[0];
+        for (label j = 0; j < D; ++j) q0 += W[j + 1]*P[j];
         const scalar ds = sd[s];
         scalar g[D];
-        for (label a = 0; a < D; ++a) g[a] = ds*q[a + 1];
+        for (label a = 0; a < D; ++a)
+        {
+            scalar r = R[a][0];
+            for (label j = 0; j < D; ++j) r += R[a][j + 1]*P[j];
+            g[a] = ds*r;
+        }
         if (sdd)
         {
-            for (label a = 0; a < D; ++a)
-            {
-                scalar Tq = 0;
-                for (label i = 0; i < n; ++i) Tq += T[a][i]*q[i];
-                g[a] += sdd[D*s + a]*q[0] - ds*Tq;
-            }
+            for (label a = 0; a < D; ++a) g[a] += sdd[D*s + a]*q0;
         }
         vOut[k] = sv[s];
-        wOut[k] = ds*q[0];
+        wOut[k] = ds*q0;
         if (D == 3)
         {
             // The solution axes of a 3D mesh are x, y, z
