@@ -151,13 +151,6 @@ void Foam::coupledPressureSystem::applyT
 }
 
 
-double Foam::coupledPressureSystem::gSum(double x)
-{
-    if (Pstream::parRun()) reduce(x, sumOp<double>());
-    return x;
-}
-
-
 void Foam::coupledPressureSystem::multiply
 (
     const std::vector<double>& x,
@@ -191,61 +184,14 @@ Foam::label Foam::coupledPressureSystem::solve
     double& relResidual
 ) const
 {
-    const label n = gas.size();
-    const std::vector<double>& b = gas.source;
-    const std::vector<double>& D = gas.diag;
-    r_.resize(n);
-    z_.resize(n);
-    p_.resize(n);
-    double bNorm = 0;
-    for (label i = 0; i < n; ++i) bNorm += b[i]*b[i];
-    bNorm = std::sqrt(gSum(bNorm));
-    if (bNorm == 0)
-    {
-        x.assign(n, 0.0);
-        relResidual = 0;
-        return 0;
-    }
-    multiply(x, Ap_);
-    double rz = 0, rr = 0;
-    for (label i = 0; i < n; ++i)
-    {
-        r_[i] = b[i] - Ap_[i];
-        z_[i] = r_[i]/D[i];
-        p_[i] = z_[i];
-        rz += r_[i]*z_[i];
-        rr += r_[i]*r_[i];
-    }
-    rz = gSum(rz);
-    rr = gSum(rr);
-    label iter = 0;
-    while (std::sqrt(rr) > tol*bNorm && iter < maxIter)
-    {
-        multiply(p_, Ap_);
-        double pAp = 0;
-        for (label i = 0; i < n; ++i) pAp += p_[i]*Ap_[i];
-        pAp = gSum(pAp);
-        if (!(pAp > 0) || !std::isfinite(pAp)) break;
-        const double alpha = rz/pAp;
-        double rzNew = 0;
-        rr = 0;
-        for (label i = 0; i < n; ++i)
+    return cg_.solve
+    (
+        [this](const std::vector<double>& u, std::vector<double>& y)
         {
-            x[i] += alpha*p_[i];
-            r_[i] -= alpha*Ap_[i];
-            z_[i] = r_[i]/D[i];
-            rzNew += r_[i]*z_[i];
-            rr += r_[i]*r_[i];
-        }
-        rzNew = gSum(rzNew);
-        rr = gSum(rr);
-        const double beta = rzNew/rz;
-        rz = rzNew;
-        for (label i = 0; i < n; ++i) p_[i] = z_[i] + beta*p_[i];
-        ++iter;
-    }
-    relResidual = std::sqrt(rr)/bNorm;
-    return iter;
+            multiply(u, y);
+        },
+        gas.diag, gas.source, x, tol, maxIter, relResidual
+    );
 }
 
 

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "csmpmStepper.H"
+#include "pressureFaceAssembly.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -130,126 +131,25 @@ bool Foam::csmpmStepper::pressureStep
         p_[k] = ps;
     }
 
-    // (3.21) on the passable share of each face; boundary faces carry
-    // their velocity for both phases
+    // (3.21) on the passable share of each face, the gas's density its
+    // content over the open volume; boundary faces carry their velocity
+    // for both phases.  (Gravity: the face's u* takes dt g, as in the gas
+    // stepper, so a face in hydrostatic balance stays at rest; B2B1: the
+    // gas's couplings are gasB2B1Operator's)
     const bool b2b1 = gasB2B1_.valid();
-    for (label d = 0; d < 3; ++d)
-    {
-        if (!mesh_.active(d)) continue;
-        const scalar A = V/mesh_.dx(d);
-        const scalar dx = mesh_.dx(d);
-        const label st = mesh_.stride(d);
-        const std::vector<double>& open = openEff_[d];
-        for (const auto& s : mesh_.segments(d))
-        {
-            const bool periodic =
-                bcs[s.lowPatch].kindOf() == gasBoundary::kind::periodic;
-            auto coupleCells = [&](label f, label l, label r)
-            {
-                // The gas's own density: its content over the open volume
-                const double rhoF = 0.5
-                   *(
-                        Ustar_.q[0][l]/max(1 - phiCell_[l], gasVolumeMin_)
-                      + Ustar_.q[0][r]/max(1 - phiCell_[r], gasVolumeMin_)
-                    );
-                // (gravity: the face's u* takes dt g, as in the gas
-                // stepper, so a face in hydrostatic balance stays at rest)
-                const double uS = 0.5
-                   *(
-                        Ustar_.q[1 + d][l]/Ustar_.q[0][l]
-                      + Ustar_.q[1 + d][r]/Ustar_.q[0][r]
-                    ) + dt*g_[d];
-                rhoF_[d][f] = rhoF;
-                uStarF_[d][f] = uS;
-                const double a = open[f];
-                // (B2B1: the gas's couplings are gasB2B1Operator's)
-                if (a <= 0 || b2b1) return;
-                const label kl = unknownOf_[l], kr = unknownOf_[r];
-                gsys.couple(kl, kr, a*A/(rhoF*dx));
-                gsys.source[kl] -= a*A*uS/dt;
-                gsys.source[kr] += a*A*uS/dt;
-            };
-            for (label m = 1; m < s.length; ++m)
-            {
-                coupleCells
-                (
-                    s.faceOffset + m, s.start + (m - 1)*st, s.start + m*st
-                );
-            }
-            // A processor face: the neighbour rank's cell is one side
-            auto coupleGhost = [&](label f, label slot, label i, bool low)
-            {
-                const double* g = gS.data() + 5*slot;
-                const double dG = g[0]/openRemote(slot);
-                const double dI =
-                    Ustar_.q[0][i]/max(1 - phiCell_[i], gasVolumeMin_);
-                const double rhoF = low ? 0.5*(dG + dI) : 0.5*(dI + dG);
-                const double uG = g[1 + d]/g[0];
-                const double uI = Ustar_.q[1 + d][i]/Ustar_.q[0][i];
-                const double uS = (low ? 0.5*(uG + uI) : 0.5*(uI + uG))
-                  + dt*g_[d];
-                rhoF_[d][f] = rhoF;
-                uStarF_[d][f] = uS;
-                const double a = open[f];
-                if (a <= 0 || b2b1) return;
-                const label k = unknownOf_[i];
-                gsys.coupleRemote(k, slot, a*A/(rhoF*dx));
-                if (low) gsys.source[k] += a*A*uS/dt;
-                else gsys.source[k] -= a*A*uS/dt;
-            };
-            const label first = s.start;
-            const label last = s.start + (s.length - 1)*st;
-            if (periodic)
-            {
-                coupleCells(s.faceOffset, last, first);
-            }
-            else if (s.lowGhost >= 0 || s.highGhost >= 0)
-            {
-                double q[5];
-                if (s.lowGhost >= 0)
-                {
-                    coupleGhost(s.faceOffset, s.lowGhost, first, true);
-                }
-                else
-                {
-                    for (int c = 0; c < 5; ++c) q[c] = Ustar_.q[c][first];
-                    const double uLo = bcs[s.lowPatch].faceVelocity(q, d);
-                    uF_[d][s.faceOffset] = uLo;
-                    usF_[d][s.faceOffset] = uLo;
-                    gsys.source[unknownOf_[first]] += A*uLo/dt;
-                }
-                if (s.highGhost >= 0)
-                {
-                    coupleGhost
-                    (
-                        s.faceOffset + s.length, s.highGhost, last, false
-                    );
-                }
-                else
-                {
-                    for (int c = 0; c < 5; ++c) q[c] = Ustar_.q[c][last];
-                    const double uHi = bcs[s.highPatch].faceVelocity(q, d);
-                    uF_[d][s.faceOffset + s.length] = uHi;
-                    usF_[d][s.faceOffset + s.length] = uHi;
-                    gsys.source[unknownOf_[last]] -= A*uHi/dt;
-                }
-            }
-            else
-            {
-                double q[5];
-                for (int c = 0; c < 5; ++c) q[c] = Ustar_.q[c][first];
-                const double uLo = bcs[s.lowPatch].faceVelocity(q, d);
-                for (int c = 0; c < 5; ++c) q[c] = Ustar_.q[c][last];
-                const double uHi = bcs[s.highPatch].faceVelocity(q, d);
-                uF_[d][s.faceOffset] = uLo;
-                uF_[d][s.faceOffset + s.length] = uHi;
-                usF_[d][s.faceOffset] = uLo;
-                usF_[d][s.faceOffset + s.length] = uHi;
-                gsys.source[unknownOf_[first]] += A*uLo/dt;
-                gsys.source[unknownOf_[last]] -= A*uHi/dt;
-            }
-        }
-    }
+    pressureFaceAssembly faces;
+    faces.faceShare = openEff_;
+    faces.cellSolid = &phiCell_;
+    faces.slotSolid = &lattice_.phiSlots();
+    faces.openMin = gasVolumeMin_;
+    faces.gasCouplings = !b2b1;
+    faces.bodyForce = true;
+    faces.alsoBoundaryVelocity = usF_;
+    faces.assemble
+    (
+        mesh_, bcs, Ustar_, gS, unknownOf_, dt, g_, gsys,
+        rhoF_, uStarF_, uF_
+    );
 
     // gasPressureOrder B2B1: the gas's velocities on the vertices (3.32),
     // eliminated (3.35), in place of the face couplings above (the

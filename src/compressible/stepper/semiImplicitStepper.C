@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "semiImplicitStepper.H"
+#include "pressureFaceAssembly.H"
 #include "dictionaryChecks.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -229,116 +230,14 @@ bool Foam::gasSteppers::semiImplicitStepper::advance
         p_[k] = ps;
     }
 
-    for (label d = 0; d < 3; ++d)
-    {
-        if (!mesh_.active(d)) continue;
-        const scalar A = V/mesh_.dx(d);
-        const scalar dx = mesh_.dx(d);
-        const label st = mesh_.stride(d);
-        for (const auto& s : mesh_.segments(d))
-        {
-            const bool periodic =
-                bcs[s.lowPatch].kindOf() == gasBoundary::kind::periodic;
-
-            auto coupleCells = [&](label f, label l, label r)
-            {
-                const double rhoF = 0.5*(Ustar_.q[0][l] + Ustar_.q[0][r]);
-                double uS = 0.5
-                   *(
-                        Ustar_.q[1 + d][l]/Ustar_.q[0][l]
-                      + Ustar_.q[1 + d][r]/Ustar_.q[0][r]
-                    );
-                rhoF_[d][f] = rhoF;
-                uStarF_[d][f] = uS;
-                if (gravity_)
-                {
-                    uS += dt*g_[d];
-                    uStarF_[d][f] = uS;
-                }
-                const label kl = unknownOf_[l], kr = unknownOf_[r];
-                sys_.couple(kl, kr, A/(rhoF*dx));
-                sys_.source[kl] -= A*uS/dt;
-                sys_.source[kr] += A*uS/dt;
-            };
-
-            for (label m = 1; m < s.length; ++m)
-            {
-                coupleCells
-                (
-                    s.faceOffset + m,
-                    s.start + (m - 1)*st,
-                    s.start + m*st
-                );
-            }
-
-            // A processor face: the neighbour rank's cell is one side
-            auto coupleGhost = [&](label f, label slot, label i, bool low)
-            {
-                const double* g = gS.data() + 5*slot;
-                const double rhoG = g[0], uG = g[1 + d]/g[0];
-                const double rhoI = Ustar_.q[0][i];
-                const double uI = Ustar_.q[1 + d][i]/rhoI;
-                const double rhoF =
-                    low ? 0.5*(rhoG + rhoI) : 0.5*(rhoI + rhoG);
-                double uS = low ? 0.5*(uG + uI) : 0.5*(uI + uG);
-                if (gravity_) uS += dt*g_[d];
-                rhoF_[d][f] = rhoF;
-                uStarF_[d][f] = uS;
-                const label k = unknownOf_[i];
-                sys_.coupleRemote(k, slot, A/(rhoF*dx));
-                if (low) sys_.source[k] += A*uS/dt;
-                else sys_.source[k] -= A*uS/dt;
-            };
-
-            const label first = s.start;
-            const label last = s.start + (s.length - 1)*st;
-            if (periodic)
-            {
-                coupleCells(s.faceOffset, last, first);
-            }
-            else if (s.lowGhost >= 0 || s.highGhost >= 0)
-            {
-                double q[5];
-                if (s.lowGhost >= 0)
-                {
-                    coupleGhost(s.faceOffset, s.lowGhost, first, true);
-                }
-                else
-                {
-                    for (int c = 0; c < 5; ++c) q[c] = Ustar_.q[c][first];
-                    const double uLo = bcs[s.lowPatch].faceVelocity(q, d);
-                    uF_[d][s.faceOffset] = uLo;
-                    sys_.source[unknownOf_[first]] += A*uLo/dt;
-                }
-                if (s.highGhost >= 0)
-                {
-                    coupleGhost
-                    (
-                        s.faceOffset + s.length, s.highGhost, last, false
-                    );
-                }
-                else
-                {
-                    for (int c = 0; c < 5; ++c) q[c] = Ustar_.q[c][last];
-                    const double uHi = bcs[s.highPatch].faceVelocity(q, d);
-                    uF_[d][s.faceOffset + s.length] = uHi;
-                    sys_.source[unknownOf_[last]] -= A*uHi/dt;
-                }
-            }
-            else
-            {
-                double q[5];
-                for (int c = 0; c < 5; ++c) q[c] = Ustar_.q[c][first];
-                const double uLo = bcs[s.lowPatch].faceVelocity(q, d);
-                for (int c = 0; c < 5; ++c) q[c] = Ustar_.q[c][last];
-                const double uHi = bcs[s.highPatch].faceVelocity(q, d);
-                uF_[d][s.faceOffset] = uLo;
-                uF_[d][s.faceOffset + s.length] = uHi;
-                sys_.source[unknownOf_[first]] += A*uLo/dt;
-                sys_.source[unknownOf_[last]] -= A*uHi/dt;
-            }
-        }
-    }
+    // (3.21) on the faces
+    pressureFaceAssembly faces;
+    faces.bodyForce = gravity_;
+    faces.assemble
+    (
+        mesh_, bcs, Ustar_, gS, unknownOf_, dt, g_, sys_,
+        rhoF_, uStarF_, uF_
+    );
 
     rep.cgIterations = sys_.solve(p_, tol_, maxIter_, rep.cgResidual);
     if (!std::isfinite(rep.cgResidual) || rep.cgResidual > 1e-3)
