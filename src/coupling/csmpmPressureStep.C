@@ -73,6 +73,8 @@ void Foam::csmpmStepper::couplingFaces()
 
 // (3.21)-(3.24) discretised, reduced to (3.37), solved; (3.36) for the
 // solid's nodes, local gradients (3.21) for the gas
+// Steps 4-5 of 3.2.2 on the lattice: assemble (3.37), solve it, project
+// the solid (3.36) and the gas (3.21), the solid's work on the gas, repair
 bool Foam::csmpmStepper::pressureStep
 (
     const gasState& U,
@@ -80,6 +82,19 @@ bool Foam::csmpmStepper::pressureStep
     gasState& out,
     report& rep
 )
+{
+    assemblePressure(U, dt);
+    if (!solvePressure(rep)) return false;
+    projectSolid(dt);
+    projectGas(dt, out);
+    exchangeWork(out);
+    return repairAfterPressure(out, rep);
+}
+
+
+// (3.37): the cells' compressibilities (3.22), (3.24), the gas's faces
+// (3.21), the solid's block T = W^T G and its divergence at v*
+void Foam::csmpmStepper::assemblePressure(const gasState& U, scalar dt)
 {
     const scalar V = mesh_.cellVolume();
     const label n = label(cells_.size());
@@ -89,14 +104,9 @@ bool Foam::csmpmStepper::pressureStep
     const bool par = par_.valid();
     const List<scalar>& mass = par ? massAll_ : grid.mass;
 
-    // Parallel: the neighbour ranks' advected cells at processor faces,
-    // and their solid fractions
+    // Parallel: the neighbour ranks' advected cells at processor faces
     std::vector<double> gS;
     if (par) mesh_.exchangeGhosts(Ustar_.q, 1, gS);
-    auto openRemote = [&](label slot)
-    {
-        return max(1 - lattice_.phiRemote(slot), gasVolumeMin_);
-    };
 
     auto pressure = [&](const gasState& S, label i)
     {
@@ -216,7 +226,11 @@ bool Foam::csmpmStepper::pressureStep
         );
     }
     sys_.addSolidSource(par ? vsAll_ : vs, dt);
+}
 
+
+bool Foam::csmpmStepper::solvePressure(report& rep)
+{
     rep.cgIterations = sys_.solve(p_, tol_, maxIter_, rep.cgResidual);
     if (!std::isfinite(rep.cgResidual) || rep.cgResidual > 1e-3)
     {
@@ -226,6 +240,19 @@ bool Foam::csmpmStepper::pressureStep
           + std::to_string(rep.cgIterations) + " CG iterations)";
         return false;
     }
+    return true;
+}
+
+
+// (3.36): the solid's nodes by the pressure (or, localGradient, the
+// ablation of Fig. 3.3)
+void Foam::csmpmStepper::projectSolid(scalar dt)
+{
+    mpmGrid& grid = solver_.grid();
+    List<vector>& vs = grid.newVelocity;
+    const bool par = par_.valid();
+    const List<scalar>& mass = par ? massAll_ : grid.mass;
+    const scalar tiny = nodeMassMin_;
 
     if (!localGradient_)
     {
@@ -325,6 +352,22 @@ bool Foam::csmpmStepper::pressureStep
             vs[i][d] -= dt*(g/nPairs)/(mesh_.dx(d)*rho);
         }
     }
+}
+
+
+// (3.21): the gas's face velocities and the flux-form updates of its
+// momentum and energy on the passable shares; the solid's face velocities
+// and the volume it sweeps per cell (swept_)
+void Foam::csmpmStepper::projectGas(scalar dt, gasState& out)
+{
+    const PtrList<gasBoundary>& bcs = op_.boundaries();
+    mpmGrid& grid = solver_.grid();
+    List<vector>& vs = grid.newVelocity;
+    const bool par = par_.valid();
+    auto openRemote = [&](label slot)
+    {
+        return max(1 - lattice_.phiRemote(slot), gasVolumeMin_);
+    };
 
     // Parallel: the neighbour ranks' pressures at processor faces
     std::vector<double> pG;
@@ -482,7 +525,11 @@ bool Foam::csmpmStepper::pressureStep
             }
         }
     }
+}
 
+
+void Foam::csmpmStepper::exchangeWork(gasState& out) const
+{
     // The solid's work on the gas of each cell: the cell's pressure times
     // the volume the solid brings in (the pressure's work on the solid's
     // nodes in (3.36) at their new velocities, turned round; none where
@@ -533,7 +580,14 @@ bool Foam::csmpmStepper::pressureStep
             }
         }
     }
+}
 
+
+// Covered cells merged, cells next to the solid repaired, then every cell
+// admissible or the step fails naming one
+bool Foam::csmpmStepper::repairAfterPressure(gasState& out, report& rep)
+{
+    const bool par = par_.valid();
     if (par)
     {
         lastRepaired_ = mergeAndRepairParallel(out);
