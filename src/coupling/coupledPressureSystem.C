@@ -151,16 +151,14 @@ void Foam::coupledPressureSystem::applyT
 }
 
 
-void Foam::coupledPressureSystem::multiply
+void Foam::coupledPressureSystem::addProduct
 (
     const std::vector<double>& x,
     std::vector<double>& y
 ) const
 {
-    // The gas's LDU product (its diag holds the solid's Jacobi diagonal
-    // too: take that back out, then add T^T M^-1 T x exactly)
-    gas.multiply(x, y);
-    if (gasB2B1) gasB2B1->addProduct(x, y);
+    // The gas's LDU product took its diag, which holds the solid's Jacobi
+    // diagonal too: take that back out, then add T^T M^-1 T x exactly
     const label nR = nRows();
     if (nR == 0 && !par) return;
     applyT(x, u_);
@@ -173,25 +171,6 @@ void Foam::coupledPressureSystem::multiply
             y[c] += val_[e]*(uk - invMass_[k]*val_[e]*x[c]);
         }
     }
-}
-
-
-Foam::label Foam::coupledPressureSystem::solve
-(
-    std::vector<double>& x,
-    double tol,
-    label maxIter,
-    double& relResidual
-) const
-{
-    return cg_.solve
-    (
-        [this](const std::vector<double>& u, std::vector<double>& y)
-        {
-            multiply(u, y);
-        },
-        gas.diag, gas.source, x, tol, maxIter, relResidual
-    );
 }
 
 

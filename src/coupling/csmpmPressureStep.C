@@ -171,7 +171,7 @@ void Foam::csmpmStepper::assemblePressure(const gasState& U, scalar dt)
             openLat_[i] = max(1 - phiCell_[i], gasVolumeMin_);
         }
         gasB2B1_->setStep(Ustar_.q, openLat_, dt, g_, gsys.source, gsys.diag);
-        sys_.gasB2B1 = gasB2B1_.get();
+        gsys.blocks.push_back(gasB2B1_.get());
     }
 
     // The solid's part: T = W^T G over the faces the solid blocks
@@ -226,12 +226,14 @@ void Foam::csmpmStepper::assemblePressure(const gasState& U, scalar dt)
         );
     }
     sys_.addSolidSource(par ? vsAll_ : vs, dt);
+    // The solid's block, appended to the gas's system
+    gsys.blocks.push_back(&sys_);
 }
 
 
 bool Foam::csmpmStepper::solvePressure(report& rep)
 {
-    rep.cgIterations = sys_.solve(p_, tol_, maxIter_, rep.cgResidual);
+    rep.cgIterations = sys_.gas.solve(p_, tol_, maxIter_, rep.cgResidual);
     if (!std::isfinite(rep.cgResidual) || rep.cgResidual > 1e-3)
     {
         rep.failure =

@@ -18,6 +18,7 @@ void Foam::pressureSystem::reset(label n)
     remoteOwner.clear();
     remoteSlot.clear();
     remoteCoeff.clear();
+    blocks.clear();
 }
 
 
@@ -50,6 +51,7 @@ void Foam::pressureSystem::multiply
             y[remoteOwner[f]] -= remoteCoeff[f]*theirs_[remoteSlot[f]];
         }
     }
+    for (const block* b : blocks) b->addProduct(x, y);
 }
 
 
