@@ -391,7 +391,6 @@ void Foam::csmpmStepper::projectGas(scalar dt, gasState& out)
     {
         if (!mesh_.active(d)) continue;
         const scalar dx = mesh_.dx(d);
-        const label st = mesh_.stride(d);
         const std::vector<double>& open = openEff_[d];
         std::vector<double>& uF = uF_[d];
         std::vector<double>& pF = pF_[d];
@@ -400,83 +399,68 @@ void Foam::csmpmStepper::projectGas(scalar dt, gasState& out)
         // Momentum impulse of the passable share of each face
         std::vector<double>& J = uStarF_[d];    // reused after uF is set
         shareL_.resize(J.size());
-        for (const auto& s : mesh_.segments(d))
+        // A face between cells of open shares ol, orr at pressures pl, pr
+        auto faceOf = [&](label f, double pl, double pr, double ol, double orr)
         {
-            const bool periodic =
-                bcs[s.lowPatch].kindOf() == gasBoundary::kind::periodic;
-            auto face = [&](label f, label l, label r)
+            uF[f] = uStarF_[d][f] - dt*(pr - pl)/(dx*rhoF_[d][f]);
+            pF[f] = 0.5*(pl + pr);
+            usF[f] = 0;
+            J[f] = open[f]*(pl - pr + rhoF_[d][f]*g_[d]*dx);
+            // Shared by the two cells as their gas contents are (a cell
+            // the solid covers holds little gas and gets little)
+            shareL_[f] = ol/(ol + orr);
+        };
+        auto openCell = [&](label i)
+        {
+            return max(1 - phiCell_[i], gasVolumeMin_);
+        };
+        pressureFaceAssembly::forEachFace
+        (
+            mesh_, bcs, d,
+            [&](label f, label l, label r)
             {
-                const double pl = p_[unknownOf_[l]], pr = p_[unknownOf_[r]];
-                uF[f] = uStarF_[d][f] - dt*(pr - pl)/(dx*rhoF_[d][f]);
-                pF[f] = 0.5*(pl + pr);
-                usF[f] = 0;
-                J[f] = open[f]*(pl - pr + rhoF_[d][f]*g_[d]*dx);
-                // Shared by the two cells as their gas contents are (a
-                // cell the solid covers holds little gas and gets little)
-                const double ol = max(1 - phiCell_[l], gasVolumeMin_);
-                const double orr = max(1 - phiCell_[r], gasVolumeMin_);
-                shareL_[f] = ol/(ol + orr);
-            };
-            for (label m = 1; m < s.length; ++m)
+                faceOf
+                (
+                    f, p_[unknownOf_[l]], p_[unknownOf_[r]],
+                    openCell(l), openCell(r)
+                );
+            },
+            [&](label fLo, label fHi)
             {
-                face(s.faceOffset + m, s.start + (m-1)*st, s.start + m*st);
-            }
-            const label first = s.start;
-            const label last = s.start + (s.length - 1)*st;
-            if (periodic)
+                uF[fHi] = uF[fLo];
+                pF[fHi] = pF[fLo];
+                usF[fHi] = 0;
+                J[fHi] = J[fLo];
+                shareL_[fHi] = shareL_[fLo];
+            },
+            // A boundary face: the cell's pressure, no impulse
+            [&](label f, label i, label, bool)
             {
-                face(s.faceOffset, last, first);
-                uF[s.faceOffset + s.length] = uF[s.faceOffset];
-                pF[s.faceOffset + s.length] = pF[s.faceOffset];
-                usF[s.faceOffset + s.length] = 0;
-                J[s.faceOffset + s.length] = J[s.faceOffset];
-                shareL_[s.faceOffset + s.length] = shareL_[s.faceOffset];
-            }
-            else
-            {
-                // (a processor face's J holds u* until ghostFace below)
-                if (s.lowGhost < 0)
-                {
-                    pF[s.faceOffset] = p_[unknownOf_[first]];
-                    J[s.faceOffset] = 0;
-                }
-                if (s.highGhost < 0)
-                {
-                    pF[s.faceOffset + s.length] = p_[unknownOf_[last]];
-                    J[s.faceOffset + s.length] = 0;
-                }
-            }
+                pF[f] = p_[unknownOf_[i]];
+                J[f] = 0;
+            },
             // A processor face as an interior one, the neighbour rank's
             // cell from its slot
-            auto ghostFace = [&](label f, double pl, double pr, double ol,
-                                 double orr)
+            [&](label f, label slot, label i, bool low)
             {
-                uF[f] = uStarF_[d][f] - dt*(pr - pl)/(dx*rhoF_[d][f]);
-                pF[f] = 0.5*(pl + pr);
-                usF[f] = 0;
-                J[f] = open[f]*(pl - pr + rhoF_[d][f]*g_[d]*dx);
-                shareL_[f] = ol/(ol + orr);
-            };
-            if (s.lowGhost >= 0)
-            {
-                ghostFace
-                (
-                    s.faceOffset, pG[s.lowGhost], p_[unknownOf_[first]],
-                    openRemote(s.lowGhost),
-                    max(1 - phiCell_[first], gasVolumeMin_)
-                );
+                if (low)
+                {
+                    faceOf
+                    (
+                        f, pG[slot], p_[unknownOf_[i]],
+                        openRemote(slot), openCell(i)
+                    );
+                }
+                else
+                {
+                    faceOf
+                    (
+                        f, p_[unknownOf_[i]], pG[slot],
+                        openCell(i), openRemote(slot)
+                    );
+                }
             }
-            if (s.highGhost >= 0)
-            {
-                ghostFace
-                (
-                    s.faceOffset + s.length,
-                    p_[unknownOf_[last]], pG[s.highGhost],
-                    max(1 - phiCell_[last], gasVolumeMin_),
-                    openRemote(s.highGhost)
-                );
-            }
-        }
+        );
         // What the pressure carries through the patches: the interior
         // impulses J sum to p_first - p_last per line (less the solid's
         // share), the boundary faces' work is the energy flux below

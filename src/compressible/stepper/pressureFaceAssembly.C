@@ -40,7 +40,6 @@ void Foam::pressureFaceAssembly::assemble
         const scalar V = mesh.cellVolume();
         const scalar A = V/mesh.dx(d);
         const scalar dx = mesh.dx(d);
-        const label st = mesh.stride(d);
         const std::vector<double>& mom = Ustar.q[1 + d];
         std::vector<double>* uB =
             alsoBoundaryVelocity ? alsoBoundaryVelocity + d : nullptr;
@@ -91,70 +90,24 @@ void Foam::pressureFaceAssembly::assemble
             else sys.source[k] -= a*A*uS/dt;
         };
 
-        for (const auto& s : mesh.segments(d))
+        // A boundary face: its condition's velocity, into the source
+        auto boundaryEnd =
+            [&](const label f, const label i, const label patch, bool low)
         {
-            for (label m = 1; m < s.length; ++m)
-            {
-                coupleCells
-                (
-                    s.faceOffset + m, s.start + (m - 1)*st, s.start + m*st
-                );
-            }
-            const label first = s.start;
-            const label last = s.start + (s.length - 1)*st;
-            const label fLo = s.faceOffset;
-            const label fHi = s.faceOffset + s.length;
-            if (bcs[s.lowPatch].kindOf() == gasBoundary::kind::periodic)
-            {
-                coupleCells(fLo, last, first);
-                continue;
-            }
-
             double q[5];
-            auto faceVelocity = [&](const label patch, const label i)
-            {
-                for (int c = 0; c < 5; ++c) q[c] = Ustar.q[c][i];
-                return bcs[patch].faceVelocity(q, d);
-            };
-            auto setBoundary = [&](const label f, const double u)
-            {
-                uF[d][f] = u;
-                if (uB) (*uB)[f] = u;
-            };
+            for (int c = 0; c < 5; ++c) q[c] = Ustar.q[c][i];
+            const double u = bcs[patch].faceVelocity(q, d);
+            uF[d][f] = u;
+            if (uB) (*uB)[f] = u;
+            if (low) sys.source[unknownOf[i]] += A*u/dt;
+            else sys.source[unknownOf[i]] -= A*u/dt;
+        };
 
-            if (s.lowGhost >= 0 || s.highGhost >= 0)
-            {
-                if (s.lowGhost >= 0)
-                {
-                    coupleGhost(fLo, s.lowGhost, first, true);
-                }
-                else
-                {
-                    const double uLo = faceVelocity(s.lowPatch, first);
-                    setBoundary(fLo, uLo);
-                    sys.source[unknownOf[first]] += A*uLo/dt;
-                }
-                if (s.highGhost >= 0)
-                {
-                    coupleGhost(fHi, s.highGhost, last, false);
-                }
-                else
-                {
-                    const double uHi = faceVelocity(s.highPatch, last);
-                    setBoundary(fHi, uHi);
-                    sys.source[unknownOf[last]] -= A*uHi/dt;
-                }
-            }
-            else
-            {
-                const double uLo = faceVelocity(s.lowPatch, first);
-                const double uHi = faceVelocity(s.highPatch, last);
-                setBoundary(fLo, uLo);
-                setBoundary(fHi, uHi);
-                sys.source[unknownOf[first]] += A*uLo/dt;
-                sys.source[unknownOf[last]] -= A*uHi/dt;
-            }
-        }
+        forEachFace
+        (
+            mesh, bcs, d, coupleCells, [](label, label) {}, boundaryEnd,
+            coupleGhost
+        );
     }
 }
 

@@ -268,54 +268,38 @@ bool Foam::gasSteppers::semiImplicitStepper::advance
     {
         if (!mesh_.active(d)) continue;
         const scalar dx = mesh_.dx(d);
-        const label st = mesh_.stride(d);
         std::vector<double>& uF = uF_[d];
         std::vector<double>& pF = pF_[d];
-        for (const auto& s : mesh_.segments(d))
+        auto faceOf = [&](label f, double pl, double pr)
         {
-            const bool periodic =
-                bcs[s.lowPatch].kindOf() == gasBoundary::kind::periodic;
-            auto face = [&](label f, label l, label r)
+            uF[f] = uStarF_[d][f] - dt*(pr - pl)/(dx*rhoF_[d][f]);
+            pF[f] = 0.5*(pl + pr);
+        };
+        pressureFaceAssembly::forEachFace
+        (
+            mesh_, bcs, d,
+            [&](label f, label l, label r)
             {
-                const double pl = p_[unknownOf_[l]], pr = p_[unknownOf_[r]];
-                uF[f] = uStarF_[d][f] - dt*(pr - pl)/(dx*rhoF_[d][f]);
-                pF[f] = 0.5*(pl + pr);
-            };
-            for (label m = 1; m < s.length; ++m)
+                faceOf(f, p_[unknownOf_[l]], p_[unknownOf_[r]]);
+            },
+            [&](label fLo, label fHi)
             {
-                face(s.faceOffset + m, s.start + (m-1)*st, s.start + m*st);
+                uF[fHi] = uF[fLo];
+                pF[fHi] = pF[fLo];
+            },
+            // (a boundary face's velocity is its condition's, set by the
+            // assembly)
+            [&](label f, label i, label, bool)
+            {
+                pF[f] = p_[unknownOf_[i]];
+            },
+            // A processor face: the neighbour rank's pressure at its slot
+            [&](label f, label slot, label i, bool low)
+            {
+                if (low) faceOf(f, pG[slot], p_[unknownOf_[i]]);
+                else faceOf(f, p_[unknownOf_[i]], pG[slot]);
             }
-            const label first = s.start;
-            const label last = s.start + (s.length - 1)*st;
-            if (periodic)
-            {
-                face(s.faceOffset, last, first);
-                uF[s.faceOffset + s.length] = uF[s.faceOffset];
-                pF[s.faceOffset + s.length] = pF[s.faceOffset];
-            }
-            else
-            {
-                pF[s.faceOffset] = p_[unknownOf_[first]];
-                pF[s.faceOffset + s.length] = p_[unknownOf_[last]];
-            }
-            auto ghostFace = [&](label f, double pl, double pr)
-            {
-                uF[f] = uStarF_[d][f] - dt*(pr - pl)/(dx*rhoF_[d][f]);
-                pF[f] = 0.5*(pl + pr);
-            };
-            if (s.lowGhost >= 0)
-            {
-                ghostFace(s.faceOffset, pG[s.lowGhost], p_[unknownOf_[first]]);
-            }
-            if (s.highGhost >= 0)
-            {
-                ghostFace
-                (
-                    s.faceOffset + s.length,
-                    p_[unknownOf_[last]], pG[s.highGhost]
-                );
-            }
-        }
+        );
 
         // What the pressure carries through the patches: the cells' p at
         // a wall, inlet or outlet face, with the face velocity's work
