@@ -692,10 +692,14 @@ bool Foam::mpmSolver::beginStep(mpmParticles& P)
         par_->sumShared(grid_.mass, &grid_.isActive);
         par_->sumShared(grid_.velocity, &grid_.isActive);
     }
+    if (massCancellation_ > 0) sumAbsMass(P);
+    // v* = p / m, with the same cancelled-mass guard as the grid update:
+    // a vertex whose signed weights cancel would otherwise get a velocity
+    // far larger than any particle's (seen on graded tetrahedra)
     const scalar tiny = VSMALL;
     for (const label i : grid_.active)
     {
-        const scalar m = grid_.mass[i];
+        const scalar m = updateMass(i);
         if (mag(m) > tiny)
         {
             grid_.velocity[i] /= m;
@@ -711,6 +715,21 @@ bool Foam::mpmSolver::beginStep(mpmParticles& P)
 }
 
 
+void Foam::mpmSolver::sumAbsMass(const mpmParticles& P)
+{
+    const label nP = P.size();
+    for (label p = 0; p < nP; ++p)
+    {
+        const scalar mp = P.m[p];
+        for (label k = kw_.start[p]; k < kw_.start[p + 1]; ++k)
+        {
+            grid_.absMass[kw_.vertex[k]] += mag(kw_.w[k])*mp;
+        }
+    }
+    if (par_) par_->sumShared(grid_.absMass, &grid_.isActive);
+}
+
+
 void Foam::mpmSolver::gridUpdate(const mpmParticles& P, const scalar dt)
 {
     const label nP = P.size();
@@ -718,7 +737,6 @@ void Foam::mpmSolver::gridUpdate(const mpmParticles& P, const scalar dt)
 
     // 3.-5. Internal (2.8) and gravity (2.9) forces
     const bool gravity = magSqr(gravity_) > 0;
-    const bool cancelling = massCancellation_ > 0;
     for (label p = 0; p < nP; ++p)
     {
         const symmTensor Vs = P.V[p]*P.sigma[p];
@@ -730,10 +748,8 @@ void Foam::mpmSolver::gridUpdate(const mpmParticles& P, const scalar dt)
             vector f = grid_.force[i] - (Vs & kw_.gradW[k]);
             if (gravity) f += kw_.w[k]*mg;
             grid_.force[i] = f;
-            if (cancelling) grid_.absMass[i] += mag(kw_.w[k])*mp;
         }
     }
-    if (cancelling && par_) par_->sumShared(grid_.absMass, &grid_.isActive);
     // Barrier contact forces (external particle forces, by the weights)
     if (contact_)
     {
