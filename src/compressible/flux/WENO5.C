@@ -17,25 +17,8 @@ namespace gasFluxSchemes
 }
 
 
-void Foam::gasFluxSchemes::WENO5::lineFluxes
-(
-    const gasLine& line,
-    double* F[5]
-) const
-{
-    physicalFluxes(line);
-    if (characteristic_ && !line.advective)
-    {
-        characteristicLineFluxes<WENO5Reconstruction>
-        (
-            line, f_, lambda_, un_, c_, F
-        );
-    }
-    else
-    {
-        splitLineFluxes<WENO5Reconstruction>(line, f_, lambda_, F);
-    }
-}
+// The lines' fluxes, in a function cloned for the CPU (cpuClones.H)
+makeLineFluxes(WENO5)
 
 
 // ************************************************************************* //
