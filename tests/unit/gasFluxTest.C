@@ -35,6 +35,26 @@ void eulerFlux(const double q[5], int n, double gamma, double f[5])
     f[4] += p*un;
 }
 
+// A line of full Euler fluxes along n over the buffers (ghosts included)
+gasLine eulerLine
+(
+    std::vector<double> buf[5],
+    label L,
+    label G,
+    int n,
+    double gamma
+)
+{
+    gasLine line;
+    for (int c = 0; c < 5; ++c) line.q[c] = buf[c].data();
+    line.L = L;
+    line.G = G;
+    line.normal = n;
+    line.gamma = gamma;
+    line.advective = false;
+    return line;
+}
+
 } // End anonymous namespace
 
 
@@ -141,13 +161,7 @@ TEST(gasFlux, uniformLineGivesPhysicalFlux)
             }
             for (int n = 0; n < 3; ++n)
             {
-                gasLine line;
-                for (int c = 0; c < 5; ++c) line.q[c] = buf[c].data();
-                line.L = L;
-                line.G = G;
-                line.normal = n;
-                line.gamma = gamma;
-                line.advective = false;
+                const gasLine line = eulerLine(buf, L, G, n, gamma);
                 double* F[5];
                 for (int c = 0; c < 5; ++c) F[c] = Fb[c].data();
                 s->lineFluxes(line, F);
@@ -201,13 +215,7 @@ void batchedEqualsOneByOne(const char* name)
     }
     for (int n = 0; n < 3; ++n)
     {
-        gasLine line;
-        for (int c = 0; c < 5; ++c) line.q[c] = buf[c].data();
-        line.L = L;
-        line.G = G;
-        line.normal = n;
-        line.gamma = gamma;
-        line.advective = false;
+        const gasLine line = eulerLine(buf, L, G, n, gamma);
         for (label i = 0; i < N; ++i)
         {
             double q[5], fi[5];
