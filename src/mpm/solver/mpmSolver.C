@@ -40,6 +40,13 @@ void Foam::mpmSolver::readSettings(const dictionary& dict)
         badEntry(dict, "massCancellation", Foam::name(massCancellation_),
             "a number 0 <= massCancellation <= 1");
     }
+    if (kernel_->nonNegativeWeights() && dict.found("massCancellation"))
+    {
+        IOWarningInFunction(dict)
+            << "massCancellation has no effect with the kernel "
+            << kernel_->type() << ": its weights are never negative, so no "
+            << "vertex mass cancels" << endl;
+    }
     maxSteps_ = getInRange(dict, "maxSteps", 1e9, 0, 1e15);
 
     // The F-bar average's weights: the kernel's, or convex (non-negative)
