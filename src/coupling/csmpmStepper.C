@@ -126,22 +126,13 @@ Foam::csmpmStepper::csmpmStepper
         cDict, "order", stepOrderNames, stepOrder::couplingFirst
     );
     {
-        const word su
-        (
-            dictionaryChecks::getAsOrDefault<word>
+        localGradient_ =
+            dictionaryChecks::getWordOf
             (
                 cDict, "solidUpdate", "eliminated",
-                "eliminated or localGradient"
+                {"eliminated", "localGradient"}
             )
-        );
-        if (su != "eliminated" && su != "localGradient")
-        {
-            dictionaryChecks::badEntry
-            (
-                cDict, "solidUpdate", su, "eliminated or localGradient"
-            );
-        }
-        localGradient_ = su == "localGradient";
+         == "localGradient";
         if (localGradient_ && Pstream::parRun())
         {
             FatalIOErrorInFunction(cDict)
@@ -230,18 +221,11 @@ Foam::csmpmStepper::csmpmStepper
     // Ambient ghost pressure needs the gas state at the particles
     const word init
     (
-        dictionaryChecks::getAsOrDefault<word>
+        dictionaryChecks::getWordOf
         (
-            cDict, "ghostInit", "ambient", "ambient or unstressed"
+            cDict, "ghostInit", "ambient", {"ambient", "unstressed"}
         )
     );
-    if (init != "ambient" && init != "unstressed")
-    {
-        dictionaryChecks::badEntry
-        (
-            cDict, "ghostInit", init, "ambient or unstressed"
-        );
-    }
     if (init == "ambient" && !Jg_.size())
     {
         // J^g from p^g = p_gas: J^g = 1 - p/lambda^g (3.17)

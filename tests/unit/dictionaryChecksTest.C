@@ -54,6 +54,29 @@ TEST(dictionaryChecks, messagesNameEntryValueAndAllowed)
 }
 
 
+// A choice between words: the word found, the default when absent, and a
+// message listing every choice for anything else
+TEST(dictionaryChecks, wordOfChoices)
+{
+    using namespace dictionaryChecks;
+    const dictionary d = testHelpers::dictOf("s MUSL; t fast; u 3;");
+    EXPECT_EQ(getWordOf(d, "s", "USL", {"USL", "MUSL"}), "MUSL");
+    EXPECT_EQ(getWordOf(d, "missing", "USL", {"USL", "MUSL"}), "USL");
+
+    std::string m = testHelpers::ioErrorOf
+    (
+        [&]{ getWordOf(d, "t", "slow", {"slow", "medium", "steady"}); }
+    );
+    EXPECT_NE(m.find("'t'"), std::string::npos) << m;
+    EXPECT_NE(m.find("fast"), std::string::npos) << m;
+    EXPECT_NE(m.find("slow, medium or steady"), std::string::npos) << m;
+
+    m = testHelpers::ioErrorOf([&]{ getWordOf(d, "u", "a", {"a", "b"}); });
+    EXPECT_NE(m.find("'u'"), std::string::npos) << m;
+    EXPECT_NE(m.find("a or b"), std::string::npos) << m;
+}
+
+
 // Entries that overflow the products of a model, lists of a negative size
 // (OpenFOAM's List raises a FatalError "bad size", not a FatalIOError) and
 // vectors with huge components all end in the message naming the entry

@@ -65,22 +65,13 @@ Foam::gasFluxScheme::gasFluxScheme(const dictionary& dict)
 :
     characteristic_(true)
 {
-    const word vars
-    (
-        dictionaryChecks::getAsOrDefault<word>
+    characteristic_ =
+        dictionaryChecks::getWordOf
         (
             dict, "variables", "characteristic",
-            "characteristic or component"
+            {"characteristic", "component"}
         )
-    );
-    if (vars != "characteristic" && vars != "component")
-    {
-        dictionaryChecks::badEntry
-        (
-            dict, "variables", vars, "characteristic or component"
-        );
-    }
-    characteristic_ = (vars == "characteristic");
+     == "characteristic";
 }
 
 

@@ -115,15 +115,9 @@ Foam::bsmsModelSpec Foam::bsmsModelSpec::read(const dictionary& dict)
     (
         dict, "nodeTypes", List<wordRe>(), "a list of patch names or regular expressions"
     );
-    const word p
-    (
-        getAsOrDefault<word>(dict, "predict", "increment", "increment or state")
-    );
-    if (p != "increment" && p != "state")
-    {
-        badEntry(dict, "predict", p, "increment or state");
-    }
-    s.increment = (p == "increment");
+    s.increment =
+        getWordOf(dict, "predict", "increment", {"increment", "state"})
+     == "increment";
     s.deltaT = getPositive(dict, "deltaT");
     s.check(dict);
     for (const word k : {"inputMin", "inputMax"})

@@ -227,8 +227,7 @@ Foam::lagrangianSamples::errors Foam::lagrangianSamples::rollout
 ) const
 {
     const lagrangianRecording& r = recordings_[c];
-    const List<lagrangianGraph::nodeKind>& kind = r.kind();
-    const label n = r.nNodes(), nP = r.nPoints();
+    const label nP = r.nPoints();
     const label K = r.nFrames();
 
     errors e;

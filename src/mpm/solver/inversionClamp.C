@@ -30,12 +30,7 @@ Foam::inversionClamp::inversionClamp
             "a sub-dictionary { treatment clamp; minStretch 0.1;"
             " maxShare 0.01; }");
     }
-    const word t(getAsOrDefault<word>(*d, "treatment", "clamp", "clamp or stop"));
-    if (t != "clamp" && t != "stop")
-    {
-        badEntry(*d, "treatment", t, "clamp or stop");
-    }
-    clamp_ = (t == "clamp");
+    clamp_ = getWordOf(*d, "treatment", "clamp", {"clamp", "stop"}) == "clamp";
     minStretch_ = getInRange(*d, "minStretch", 0.1, 0, 1);
     if (!(minStretch_ < 1))
     {

@@ -53,29 +53,21 @@ void Foam::mpmSolver::readSettings(const dictionary& dict)
     // by default where the kernel's weights cancel (ring supports)
     const word fbarAverage
     (
-        getAsOrDefault<word>
+        getWordOf
         (
             dict, "FbarAverage",
             kernel_->defaultMassCancellation() > 0 ? "convex" : "kernel",
-            "kernel or convex"
+            {"kernel", "convex"}
         )
     );
-    if (fbarAverage != "kernel" && fbarAverage != "convex")
-    {
-        badEntry(dict, "FbarAverage", fbarAverage, "kernel or convex");
-    }
     fbarConvex_ = (fbarAverage == "convex");
 
     // The length of CFL h/c: the shortest vertex size (mean edge), or the
     // kernel's own (for mlsRing and umls the narrowest support h_v)
     const word stepLength
     (
-        getAsOrDefault<word>(dict, "stepLength", "vertex", "vertex or kernel")
+        getWordOf(dict, "stepLength", "vertex", {"vertex", "kernel"})
     );
-    if (stepLength != "vertex" && stepLength != "kernel")
-    {
-        badEntry(dict, "stepLength", stepLength, "vertex or kernel");
-    }
     hMin_ =
         stepLength == "kernel"
       ? kernel_->stepLength()
@@ -85,17 +77,13 @@ void Foam::mpmSolver::readSettings(const dictionary& dict)
     // free surface can hold a vanishing mass (linear)
     const word scheme
     (
-        getAsOrDefault<word>
+        getWordOf
         (
             dict, "updateScheme",
             kernel_->vanishingVertexMass() ? "MUSL" : "USL",
-            "USL or MUSL"
+            {"USL", "MUSL"}
         )
     );
-    if (scheme != "USL" && scheme != "MUSL")
-    {
-        badEntry(dict, "updateScheme", scheme, "USL or MUSL");
-    }
     musl_ = (scheme == "MUSL");
 
     const dictionary* md = dict.findDict("materials", keyType::LITERAL);
