@@ -355,8 +355,16 @@ void Foam::csmpmStepper::setGasB2B1(const dictionary& cDict)
         new gasB2B1Operator(mesh_, N, periodic, cells_, global)
     );
     openLat_.assign(mesh_.nLattice(), 1.0);
-    Info<< "    gas B2B1: " << gasB2B1_->nVertices()
-        << " velocity nodes" << nl;
+    // The largest rank's window: what a rank holds and works on
+    const label nW = returnReduce(gasB2B1_->nWindowCells(), maxOp<label>());
+    Info<< "    gas B2B1: the largest rank's window " << nW << " of "
+        << N[0]*N[1]*N[2] << " lattice cells, "
+        << returnReduce(gasB2B1_->nVertices(), maxOp<label>())
+        << " velocity nodes, "
+        << returnReduce(gasB2B1_->nHaloCells(), maxOp<label>())
+        << " halo cells from up to "
+        << returnReduce(gasB2B1_->nHaloRanks(), maxOp<label>())
+        << " ranks" << nl;
 }
 
 

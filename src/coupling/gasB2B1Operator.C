@@ -145,34 +145,20 @@ Foam::gasB2B1Operator::gasB2B1Operator
 )
 :
     latOf_(global),
-    local_(cells)
+    local_(cells),
+    nHalo_(0)
 {
     V_ = mesh.cellVolume();
     for (label d = 0; d < 3; ++d)
     {
         active_[d] = mesh.active(d);
         periodic_[d] = active_[d] && periodic[d];
-        nc_[d] = active_[d] ? N[d] : 1;
+        N_[d] = active_[d] ? N[d] : 1;
         A_[d] = V_/mesh.dx(d);
-        if (active_[d])
-        {
-            table1D
-            (
-                nc_[d], periodic_[d], start_[d], cell_[d], D_[d], M_[d],
-                W_[d]
-            );
-            nv_[d] = label(start_[d].size()) - 1;
-        }
-        else
-        {
-            // One cell across: the identity
-            nv_[d] = 1;
-            start_[d] = {0, 1};
-            cell_[d] = {0};
-            D_[d] = {0.0};
-            M_[d] = {1.0};
-            W_[d] = {1.0};
-        }
+    }
+    buildWindow();
+    for (label d = 0; d < 3; ++d)
+    {
         D2_[d].resize(D_[d].size());
         M2_[d].resize(M_[d].size());
         for (size_t e = 0; e < D_[d].size(); ++e)
@@ -181,18 +167,8 @@ Foam::gasB2B1Operator::gasB2B1Operator
             M2_[d][e] = M_[d][e]*M_[d][e];
         }
     }
-    nGlobal_ = nc_[0]*nc_[1]*nc_[2];
-    if (Pstream::parRun())
-    {
-        allIdx_.setSize(Pstream::nProcs());
-        labelList& mine = allIdx_[Pstream::myProcNo()];
-        mine.setSize(label(latOf_.size()));
-        forAll(mine, k) mine[k] = latOf_[k];
-        Pstream::gatherList(allIdx_);
-        Pstream::scatterList(allIdx_);
-        all_.setSize(Pstream::nProcs());
-    }
-    const std::vector<double> ones(size_t(nGlobal_), 1.0);
+    buildHalo();
+    const std::vector<double> ones(size_t(nWindowCells()), 1.0);
     const std::vector<double>* F[3] = {&W_[0], &W_[1], &W_[2]};
     forward(ones, Wsum_, F);
 }
@@ -291,33 +267,6 @@ void Foam::gasB2B1Operator::backward
 }
 
 
-void Foam::gasB2B1Operator::toGlobal
-(
-    const std::vector<double>& v,
-    std::vector<double>& global
-) const
-{
-    global.resize(size_t(nGlobal_));
-    const label n = label(latOf_.size());
-    if (!Pstream::parRun())
-    {
-        for (label k = 0; k < n; ++k) global[latOf_[k]] = v[k];
-        return;
-    }
-    scalarList& mine = all_[Pstream::myProcNo()];
-    mine.setSize(n);
-    for (label k = 0; k < n; ++k) mine[k] = v[k];
-    Pstream::gatherList(all_);
-    Pstream::scatterList(all_);
-    forAll(all_, p)
-    {
-        const labelList& idx = allIdx_[p];
-        const scalarList& val = all_[p];
-        forAll(idx, k) global[idx[k]] = val[k];
-    }
-}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 // (3.35) into (3.37): the gas's lumped masses, C = theta^2/M, the source
@@ -336,34 +285,38 @@ void Foam::gasB2B1Operator::setStep
     const std::vector<double>* FW[3] = {&W_[0], &W_[1], &W_[2]};
     std::vector<double>& mass = mass_;
     std::vector<double>& mom = mom_;
-    // The whole lattice's advected gas and open fractions
+    // The window's advected gas and open fractions
     const label n = label(latOf_.size());
-    u_.resize(n);
-    for (label c = 0; c < 4; ++c)
+    for (label c = 0; c < 5; ++c)
     {
-        for (label k = 0; k < n; ++k) u_[k] = q[c][local_[k]];
-        toGlobal(u_, qg_[c]);
+        const std::vector<double>& f = c < 4 ? q[c] : open;
+        uk_[c].resize(n);
+        for (label k = 0; k < n; ++k) uk_[c][k] = f[local_[k]];
     }
-    for (label k = 0; k < n; ++k) u_[k] = open[local_[k]];
-    toGlobal(u_, openG_);
-    forward(qg_[0], mass, FW);
-    forward(openG_, theta_, FW);
+    const std::vector<double>* uk[5] =
+        {&uk_[0], &uk_[1], &uk_[2], &uk_[3], &uk_[4]};
+    std::vector<double>* qw[5] = {&qw_[0], &qw_[1], &qw_[2], &qw_[3], &qw_[4]};
+    toWindow(uk, qw, 5);
+    forward(qw_[0], mass, FW);
+    forward(qw_[4], theta_, FW);
     C_.resize(nV);
     for (label v = 0; v < nV; ++v)
     {
         mass[v] *= V_;
         theta_[v] /= Wsum_[v];
-        C_[v] = theta_[v]*theta_[v]/mass[v];
+        // A vertex out of the rank's reach may have no gas in the window
+        C_[v] = mass[v] > 0 ? theta_[v]*theta_[v]/mass[v] : 0;
     }
     diag_.assign(n, 0.0);
     for (label d = 0; d < 3; ++d)
     {
         if (!active_[d]) continue;
-        forward(qg_[1 + d], mom, FW);
+        forward(qw_[1 + d], mom, FW);
         // theta u* A/dt at each vertex
         for (label v = 0; v < nV; ++v)
         {
-            const double u = V_*mom[v]/mass[v] + dt*g[d];
+            const double u =
+                mass[v] > 0 ? V_*mom[v]/mass[v] + dt*g[d] : 0;
             mom[v] = theta_[v]*u*A_[d]/dt;
         }
         const std::vector<double>* F[3];
@@ -374,13 +327,13 @@ void Foam::gasB2B1Operator::setStep
             F2[e] = e == d ? &D2_[e] : &M2_[e];
         }
         backward(mom, y_, F);
-        for (label k = 0; k < n; ++k) source[k] += y_[latOf_[k]];
+        for (label k = 0; k < n; ++k) source[k] += y_[win_[k]];
 
         // diag_j = sum_v C_v A^2 G_vj^2 (G's factors squared)
         b_.resize(nV);
         for (label v = 0; v < nV; ++v) b_[v] = C_[v]*A_[d]*A_[d];
         backward(b_, y_, F2);
-        for (label k = 0; k < n; ++k) diag_[k] += y_[latOf_[k]];
+        for (label k = 0; k < n; ++k) diag_[k] += y_[win_[k]];
     }
     for (label k = 0; k < n; ++k) diag[k] += diag_[k];
 }
@@ -396,7 +349,9 @@ void Foam::gasB2B1Operator::addProduct
 {
     const label n = label(latOf_.size());
     const label nV = nVertices();
-    toGlobal(x, x_);
+    const std::vector<double>* xk[1] = {&x};
+    std::vector<double>* xw[1] = {&x_};
+    toWindow(xk, xw, 1);
     for (label d = 0; d < 3; ++d)
     {
         if (!active_[d]) continue;
@@ -406,7 +361,7 @@ void Foam::gasB2B1Operator::addProduct
         const double A2 = A_[d]*A_[d];
         for (label v = 0; v < nV; ++v) b_[v] *= C_[v]*A2;
         backward(b_, y_, F);
-        for (label k = 0; k < n; ++k) y[k] += y_[latOf_[k]];
+        for (label k = 0; k < n; ++k) y[k] += y_[win_[k]];
     }
     for (label k = 0; k < n; ++k) y[k] -= diag_[k]*x[k];
 }

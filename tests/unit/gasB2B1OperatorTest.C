@@ -124,3 +124,32 @@ TEST(gasB2B1Operator, periodicPartitionOfUnity)
     }
     for (const double s : sum) EXPECT_NEAR(s, 1.0, 1e-14);
 }
+
+
+// A rank's window along one direction: the shortest range holding the
+// positions its rows reach; on a periodic direction an arc that may cross
+// the seam, the whole circle where the gaps leave nothing out
+TEST(gasB2B1Operator, windowCoveringRange)
+{
+    auto range = [](const std::vector<label>& marked, label n, bool periodic)
+    {
+        std::vector<bool> mark(n, false);
+        for (const label i : marked) mark[i] = true;
+        label first = -1, length = -1;
+        gasB2B1Operator::coveringRange(mark, periodic, first, length);
+        return std::make_pair(first, length);
+    };
+    using P = std::pair<label, label>;
+    EXPECT_EQ(range({3, 4, 7}, 10, false), P(3, 5));
+    EXPECT_EQ(range({0, 1, 9}, 10, false), P(0, 10));
+    // Across the seam: 9, 0, 1 (the gap 2..8 left out)
+    EXPECT_EQ(range({0, 1, 9}, 10, true), P(9, 3));
+    // Two gaps: the longer (5..8) is left out, the arc 9..4
+    EXPECT_EQ(range({0, 4, 9}, 10, true), P(9, 6));
+    // A gap at the end only: no wrap needed
+    EXPECT_EQ(range({2, 3, 4}, 10, true), P(2, 3));
+    // Every position, and none
+    EXPECT_EQ(range({0, 1, 2, 3}, 4, true), P(0, 4));
+    EXPECT_EQ(range({}, 4, true).second, 0);
+    EXPECT_EQ(range({}, 4, false).second, 0);
+}
