@@ -285,18 +285,11 @@ void Foam::gasB2B1Operator::setStep
     const std::vector<double>* FW[3] = {&W_[0], &W_[1], &W_[2]};
     std::vector<double>& mass = mass_;
     std::vector<double>& mom = mom_;
-    // The window's advected gas and open fractions
+    // The window's advected gas and open fractions (per lattice cell)
     const label n = label(latOf_.size());
-    for (label c = 0; c < 5; ++c)
-    {
-        const std::vector<double>& f = c < 4 ? q[c] : open;
-        uk_[c].resize(n);
-        for (label k = 0; k < n; ++k) uk_[c][k] = f[local_[k]];
-    }
-    const std::vector<double>* uk[5] =
-        {&uk_[0], &uk_[1], &uk_[2], &uk_[3], &uk_[4]};
+    const std::vector<double>* lat[5] = {&q[0], &q[1], &q[2], &q[3], &open};
     std::vector<double>* qw[5] = {&qw_[0], &qw_[1], &qw_[2], &qw_[3], &qw_[4]};
-    toWindow(uk, qw, 5);
+    toWindow(lat, &local_, qw, 5);
     forward(qw_[0], mass, FW);
     forward(qw_[4], theta_, FW);
     C_.resize(nV);
@@ -351,7 +344,7 @@ void Foam::gasB2B1Operator::addProduct
     const label nV = nVertices();
     const std::vector<double>* xk[1] = {&x};
     std::vector<double>* xw[1] = {&x_};
-    toWindow(xk, xw, 1);
+    toWindow(xk, nullptr, xw, 1);
     for (label d = 0; d < 3; ++d)
     {
         if (!active_[d]) continue;

@@ -296,18 +296,24 @@ void Foam::gasB2B1Operator::buildHalo()
 void Foam::gasB2B1Operator::toWindow
 (
     const std::vector<double>* const* v,
+    const std::vector<label>* at,
     std::vector<double>* const* w,
     label nf
 ) const
 {
+    // Unknown k's value of field f
+    auto value = [&](label f, label k)
+    {
+        return (*v[f])[at ? (*at)[k] : k];
+    };
     const label nW = nWindowCells();
     for (label f = 0; f < nf; ++f)
     {
         // Cells out of reach stay zero
         if (label(w[f]->size()) != nW) w[f]->assign(nW, 0.0);
-        const std::vector<double>& vf = *v[f];
         std::vector<double>& wf = *w[f];
-        for (size_t k = 0; k < win_.size(); ++k) wf[win_[k]] = vf[k];
+        const label n = label(win_.size());
+        for (label k = 0; k < n; ++k) wf[win_[k]] = value(f, k);
     }
     if (!Pstream::parRun()) return;
 
@@ -320,7 +326,7 @@ void Foam::gasB2B1Operator::toWindow
         label i = 0;
         for (label f = 0; f < nf; ++f)
         {
-            for (const label k : ks) send[i++] = (*v[f])[k];
+            for (const label k : ks) send[i++] = value(f, k);
         }
         UOPstream toP(p, pBufs);
         toP << send;
