@@ -95,7 +95,12 @@ Foam::latticeRing::latticeRing(const cartesianMesh& lattice)
             << lat_.n(0) << " x " << lat_.n(1) << " x " << lat_.n(2)
             << "): the solid's deposits of a -parallel CSMPM run need a"
             << " box decomposition (simple or hierarchical) of a mesh"
-            << " without holes" << exit(FatalError);
+            << " without holes." << nl
+            << "    simple and hierarchical tilt their axes by the coeffs'"
+            << " delta (0.001 unless given), which cuts a lattice of more"
+            << " than about 1/delta cells across a split direction off the"
+            << " box: give delta 1e-8 in decomposeParDict's coeffs"
+            << exit(FatalError);
     }
     {
         labelVector Nv(N_[0], N_[1], N_[2]);
