@@ -1,0 +1,77 @@
+#!/usr/bin/python3
+"""pumpkin3D's table: python3 summary.py RUNDIR pumpkin...
+
+Per pumpkin (RUNDIR/<pumpkin>, and pumpkin3D_<pumpkin>_solid.dat that
+plotCsmpm.py wrote): lattice, ranks, particles, coupled steps, wall time,
+fragments and strays at the last written time, the particles' plastic
+strain there (epsilonP: mean, largest, the share of particles above 1e-3;
+0 for an elastic material), the shape (the particles' mean distance from
+the pumpkin's centre and its spread over the particles, at 0 and at the
+end), and the energy audit's total (where the step's energy went,
+relative to the starting energy).
+"""
+import os, re, sys
+import numpy as np
+
+num = r'[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?'
+centre = np.array([0.5, 0.5, 0.45])
+
+
+def field(case, t, name):
+    """A cloud field: vectors (N x 3) or scalars (N); None if not written"""
+    p = f'{case}/{t}/lagrangian/mpmCloud/{name}'
+    if not os.path.exists(p):
+        return None
+    s = open(p).read()
+    s = s[s.index('}') + 1:]
+    v = re.findall(rf'\(({num}) ({num}) ({num})\)', s)
+    m = re.search(rf'^\s*(\d+)\s*\{{', s, re.M)
+    if v and m:                             # a uniform list: N{(a b c)}
+        return np.tile([float(c) for c in v[0]], (int(m.group(1)), 1))
+    if v:
+        return np.array([[float(c) for c in m] for m in v])
+    m = re.search(rf'(\d+)\s*\{{\s*({num})\s*\}}', s)
+    if m:                                   # a uniform list: N{value}
+        return np.full(int(m.group(1)), float(m.group(2)))
+    body = s[s.index('(') + 1:]
+    return np.array([float(c) for c in body.split(')')[0].split()])
+
+
+def shape(case, t):
+    r = np.linalg.norm(field(case, t, 'positions') - centre, axis=1)
+    return r.mean(), r.std()
+
+
+run = sys.argv[1]
+print('# pumpkin n ranks particles steps wall_s fragments strays '
+      'epsP_mean epsP_max yielded_share r_mean0 r_std0 r_mean r_std '
+      'energy_total')
+for p in sys.argv[2:]:
+    case = f'{run}/{p}'
+    log = open(f'{case}/log.shockMpmFoam').read()
+    n = int(open(f'{case}/caseInfo').read().split()[0])
+    ranks = 1
+    m = re.search(r'^nProcs\s*:\s*(\d+)', log, re.M)
+    if m:
+        ranks = int(m.group(1))
+    steps = len(re.findall(r'^Step ', log, re.M))
+    wall = open(f'{case}/log.wallTime').read().strip()
+    times = sorted((d for d in os.listdir(case)
+                    if re.fullmatch(num, d)
+                    and os.path.isdir(f'{case}/{d}/lagrangian')), key=float)
+    last = times[-1]
+    rows = [l.split() for l in open(f'pumpkin3D_{p}_solid.dat')
+            if l[0] not in '# ' and l.strip()]
+    frag, strays = rows[-1][1], rows[-1][8]
+    eps = field(case, last, 'epsilonP')
+    if eps is None:
+        eps = np.zeros(1)
+    r0 = shape(case, times[0])
+    r1 = shape(case, last)
+    audits = re.findall(r'total (' + num + ')', log.split('CSMPM energy audit')[-1]) \
+        if 'CSMPM energy audit' in log else []
+    total = audits[0] if audits else 'nan'
+    nPart = len(field(case, last, 'mass'))
+    print(f'{p} {n} {ranks} {nPart} {steps} {wall} {frag} {strays} '
+          f'{eps.mean():.4g} {eps.max():.4g} {(eps > 1e-3).mean():.4g} '
+          f'{r0[0]:.5f} {r0[1]:.5f} {r1[0]:.5f} {r1[1]:.5f} {total}')
