@@ -23,6 +23,7 @@ fragments and totals are the whole cloud's.
 import os, re, sys
 import numpy as np
 from particlePairs import clusters
+from csmpmCase import cloudField
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
@@ -45,22 +46,7 @@ def internal(t, field):
 
 
 def cloud(t, field):
-    p = f'{case}/{t}/lagrangian/mpmCloud/{field}'
-    if not os.path.exists(p):
-        return np.zeros((0, 3))
-    s = open(p).read()
-    s = s[s.index('}') + 1:]
-    v = re.findall(rf'\(({num}) ({num}) ({num})\)', s)
-    m = re.search(rf'^\s*(\d+)\s*\{{', s, re.M)
-    if v and m:                             # a uniform list: N{(a b c)}
-        return np.tile([float(c) for c in v[0]], (int(m.group(1)), 1))
-    if v:
-        return np.array([[float(c) for c in m] for m in v])
-    m = re.search(rf'(\d+)\s*\{{\s*({num})\s*\}}', s)
-    if m:                                   # a uniform list: N{value}
-        return np.full(int(m.group(1)), float(m.group(2)))
-    body = s[s.index('(') + 1:]
-    return np.array([float(c) for c in body.split(')')[0].split()])
+    return cloudField(case, t, field)
 
 
 def fragments(x, h):

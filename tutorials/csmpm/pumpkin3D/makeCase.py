@@ -24,23 +24,17 @@ decomposeParDict for np ranks (simple along x, or 2 x np/2 along x and
 y, delta 1e-8: boxes of the lattice).
 """
 import math, os, sys
-a = dict(n=64, tEnd=0.1, write=0.02, material='neoHookean', E=1.5e3,
-         nu=0.25, rhoS=10.0, residual=-1.0, eta=0.0, pIn=300.0, rhoIn=30.0,
-         lobes=8, groove=0.1, thickness=0.06, np=1, substeps=32,
-         **{'yield': 600.0})
+sys.path.insert(0, os.path.join(os.environ['MPMFOAM_DIR'], 'bin', 'tools'))
+from csmpmCase import Case, material, parameters
+a = parameters(dict(n=64, tEnd=0.1, write=0.02, material='neoHookean',
+                    E=1.5e3, nu=0.25, rhoS=10.0, residual=-1.0, eta=0.0,
+                    pIn=300.0, rhoIn=30.0, lobes=8, groove=0.1,
+                    thickness=0.06, np=1, substeps=32,
+                    **{'yield': 600.0}), sys.argv[2:])
 d = sys.argv[1]
-for kv in sys.argv[2:]:
-    k, v = kv.split('=')
-    if k not in a:
-        sys.exit(f'makeCase.py: unknown parameter {k} (allowed: {", ".join(sorted(a))})')
-    a[k] = type(a[k])(v)
 n = int(a['n']); dx = 1.0/n
-H = 'FoamFile { version 2.0; format ascii; class %s; object %s; }\n'
-for sub in ('0', 'constant/cellSets', 'system'):
-    os.makedirs(os.path.join(d, sub), exist_ok=True)
-def w(path, cls, obj, body):
-    with open(os.path.join(d, path), 'w') as f:
-        f.write(H % (cls, obj) + body)
+case = Case(d, ('0', 'constant/cellSets', 'system'))
+w = case.write
 
 # The pumpkin's geometry (cell centres inside it)
 cx, cy, cz = 0.5, 0.5, 0.45
@@ -75,15 +69,7 @@ def cellSet(name, cells):
 cellSet('pumpkin', shell)
 cellSet('hot', hot)
 
-w('system/blockMeshDict', 'dictionary', 'blockMeshDict', f'''
-vertices ( (0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 1) (1 0 1) (1 1 1) (0 1 1) );
-blocks ( hex (0 1 2 3 4 5 6 7) ({n} {n} {n}) simpleGrading (1 1 1) );
-boundary
-(
-    open {{ type patch; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2)
-                              (0 3 2 1) (4 5 6 7)); }}
-);
-''')
+case.unitCube(n)
 w('system/topoSetDict', 'dictionary', 'topoSetDict', '''
 actions
 (
@@ -95,35 +81,10 @@ defaultFieldValues ( volScalarFieldValue p 1 volScalarFieldValue rho 1.4 );
 regions ( cellToCell {{ set hot; fieldValues ( volScalarFieldValue p {a["pIn"]}
     volScalarFieldValue rho {a["rhoIn"]} ); }} );
 ''')
-w('system/controlDict', 'dictionary', 'controlDict', f'''
-application shockMpmFoam; startFrom latestTime; startTime 0; stopAt endTime;
-endTime {a["tEnd"]}; deltaT 1e-6; writeControl adjustable;
-writeInterval {a["write"]}; purgeWrite 0; writeFormat ascii;
-writePrecision 17; writeCompression off; timeFormat general;
-timePrecision 6; runTimeModifiable false;
-''')
-w('system/fvSchemes', 'dictionary', 'fvSchemes', '''
-ddtSchemes { default Euler; } gradSchemes { default Gauss linear; }
-divSchemes { default none; } laplacianSchemes { default none; }
-interpolationSchemes { default linear; } snGradSchemes { default corrected; }
-''')
-w('system/fvSolution', 'dictionary', 'fvSolution', '\n')
-w('system/shockMpmDict', 'dictionary', 'shockMpmDict', f'''
-gas {{ stepper semiImplicit; scheme WENO5; timeIntegration RK3; CFL 0.5; }}
-boundaries {{ open {{ type outlet; }} }}
-coupling {{ order couplingFirst; ghostInit ambient; solidSubsteps {a["substeps"]};
-    energyAudit yes; }}
-''')
-w('constant/thermophysicalProperties', 'dictionary',
-  'thermophysicalProperties', 'gamma 1.4; R 1;\n')
-mat = f'type {a["material"]}; rho {a["rhoS"]}; E {a["E"]}; nu {a["nu"]};'
-if a['material'] == 'henckyJ2':
-    kr = a['yield'] if a['residual'] < 0 else a['residual']
-    mat += f' kappaP {a["yield"]}; kappaR {kr}; eta {a["eta"]};'
-w('constant/mpmProperties', 'dictionary', 'mpmProperties', f'''
-kernel bspline2; transfer APIC; CFL 0.5;
-materials {{ pumpkin {{ {mat} }} }}
-''')
+case.common(a['tEnd'], a['write'], 17,
+            'order couplingFirst; ghostInit ambient; '
+            f'solidSubsteps {a["substeps"]};\n    energyAudit yes;',
+            f'pumpkin {{ {material(a)} }}')
 w('system/mpmSetParticlesDict', 'dictionary', 'mpmSetParticlesDict', '''
 regions ( pumpkin { type cellZone; zone pumpkin; material pumpkin; perCell 2; } );
 ''')
@@ -137,9 +98,4 @@ coeffs {{ n ({nxyz}); delta 1e-8; }}
 ''')
 with open(os.path.join(d, 'caseInfo'), 'w') as f:
     f.write(f'{n} {n} {dx!r}\n')
-for name, cls, dim, val in (('p', 'volScalarField', '[1 -1 -2 0 0 0 0]', 'uniform 1'),
-                             ('rho', 'volScalarField', '[1 -3 0 0 0 0 0]', 'uniform 1.4'),
-                             ('U', 'volVectorField', '[0 1 -1 0 0 0 0]', 'uniform (0 0 0)')):
-    w('0/' + name, cls, name, f'dimensions {dim};\ninternalField {val};\n'
-      'boundaryField { open { type zeroGradient; } }\n')
 print(f'pumpkin: {len(shell)} shell cells, {len(hot)} hot gas cells')

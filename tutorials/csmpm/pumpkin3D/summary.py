@@ -12,29 +12,17 @@ relative to the starting energy).
 """
 import os, re, sys
 import numpy as np
+sys.path.insert(0, os.path.join(os.environ['MPMFOAM_DIR'], 'bin', 'tools'))
+from csmpmCase import NUM as num, cloudField
 
-num = r'[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?'
 centre = np.array([0.5, 0.5, 0.45])
 
 
 def field(case, t, name):
-    """A cloud field: vectors (N x 3) or scalars (N); None if not written"""
-    p = f'{case}/{t}/lagrangian/mpmCloud/{name}'
-    if not os.path.exists(p):
+    """A cloud field (N x 3 or N), None if not written"""
+    if not os.path.exists(f'{case}/{t}/lagrangian/mpmCloud/{name}'):
         return None
-    s = open(p).read()
-    s = s[s.index('}') + 1:]
-    v = re.findall(rf'\(({num}) ({num}) ({num})\)', s)
-    m = re.search(rf'^\s*(\d+)\s*\{{', s, re.M)
-    if v and m:                             # a uniform list: N{(a b c)}
-        return np.tile([float(c) for c in v[0]], (int(m.group(1)), 1))
-    if v:
-        return np.array([[float(c) for c in m] for m in v])
-    m = re.search(rf'(\d+)\s*\{{\s*({num})\s*\}}', s)
-    if m:                                   # a uniform list: N{value}
-        return np.full(int(m.group(1)), float(m.group(2)))
-    body = s[s.index('(') + 1:]
-    return np.array([float(c) for c in body.split(')')[0].split()])
+    return cloudField(case, t, name)
 
 
 def shape(case, t):

@@ -18,29 +18,17 @@ shell's ring).  A smoke test of the coupling in 3D: the coarse lattice
 makes the shell two cells thick.
 """
 import os, sys
-a = dict(n=32, tEnd=0.06, write=0.02, pIn=50.0, rhoIn=7.0, rhoS=10.0,
-         E=500.0, nu=0.25, rIn=0.2, rOut=0.27, material='neoHookean',
-         residual=-1.0, eta=0.0, notch=0.0, **{'yield': 20.0})
+sys.path.insert(0, os.path.join(os.environ['MPMFOAM_DIR'], 'bin', 'tools'))
+from csmpmCase import Case, material, parameters
+a = parameters(dict(n=32, tEnd=0.06, write=0.02, pIn=50.0, rhoIn=7.0,
+                    rhoS=10.0, E=500.0, nu=0.25, rIn=0.2, rOut=0.27,
+                    material='neoHookean', residual=-1.0, eta=0.0,
+                    notch=0.0, **{'yield': 20.0}), sys.argv[2:])
 d = sys.argv[1]
-for kv in sys.argv[2:]:
-    k, v = kv.split('=')
-    a[k] = type(a[k])(v)
 n = int(a['n']); dx = 1.0/n
-H = 'FoamFile { version 2.0; format ascii; class %s; object %s; }\n'
-for sub in ('0', 'constant', 'system'):
-    os.makedirs(os.path.join(d, sub), exist_ok=True)
-def w(path, cls, obj, body):
-    with open(os.path.join(d, path), 'w') as f:
-        f.write(H % (cls, obj) + body)
-w('system/blockMeshDict', 'dictionary', 'blockMeshDict', f'''
-vertices ( (0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 1) (1 0 1) (1 1 1) (0 1 1) );
-blocks ( hex (0 1 2 3 4 5 6 7) ({n} {n} {n}) simpleGrading (1 1 1) );
-boundary
-(
-    open {{ type patch; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2)
-                              (0 3 2 1) (4 5 6 7)); }}
-);
-''')
+case = Case(d)
+w = case.write
+case.unitCube(n)
 notches = ''
 if a['notch'] > 0:
     # slots along the two meridians x = 0.5 and y = 0.5 (the cells whose
@@ -75,41 +63,11 @@ defaultFieldValues ( volScalarFieldValue p 1 volScalarFieldValue rho 1.4 );
 regions ( cellToCell {{ set hot; fieldValues ( volScalarFieldValue p {a["pIn"]}
     volScalarFieldValue rho {a["rhoIn"]} ); }} );
 ''')
-w('system/controlDict', 'dictionary', 'controlDict', f'''
-application shockMpmFoam; startFrom latestTime; startTime 0; stopAt endTime;
-endTime {a["tEnd"]}; deltaT 1e-6; writeControl adjustable;
-writeInterval {a["write"]}; purgeWrite 0; writeFormat ascii;
-writePrecision 10; writeCompression off; timeFormat general;
-timePrecision 6; runTimeModifiable false;
-''')
-w('system/fvSchemes', 'dictionary', 'fvSchemes', '''
-ddtSchemes { default Euler; } gradSchemes { default Gauss linear; }
-divSchemes { default none; } laplacianSchemes { default none; }
-interpolationSchemes { default linear; } snGradSchemes { default corrected; }
-''')
-w('system/fvSolution', 'dictionary', 'fvSolution', '\n')
-w('system/shockMpmDict', 'dictionary', 'shockMpmDict', '''
-gas { stepper semiImplicit; scheme WENO5; timeIntegration RK3; CFL 0.5; }
-boundaries { open { type outlet; } }
-coupling { order couplingFirst; ghostInit ambient; }
-''')
-w('constant/thermophysicalProperties', 'dictionary',
-  'thermophysicalProperties', 'gamma 1.4; R 1;\n')
-mat = f'type {a["material"]}; rho {a["rhoS"]}; E {a["E"]}; nu {a["nu"]};'
-if a['material'] == 'henckyJ2':
-    kr = a['yield'] if a['residual'] < 0 else a['residual']
-    mat += f' kappaP {a["yield"]}; kappaR {kr}; eta {a["eta"]};'
-w('constant/mpmProperties', 'dictionary', 'mpmProperties', f'''
-kernel bspline2; transfer APIC; CFL 0.5;
-materials {{ shell {{ {mat} }} }}
-''')
+case.common(a['tEnd'], a['write'], 10,
+            'order couplingFirst; ghostInit ambient;',
+            f'shell {{ {material(a)} }}')
 w('system/mpmSetParticlesDict', 'dictionary', 'mpmSetParticlesDict', '''
 regions ( shell { type cellZone; zone shell; material shell; perCell 2; } );
 ''')
 with open(os.path.join(d, 'caseInfo'), 'w') as f:
     f.write(f'{n} {n} {dx!r}\n')
-for name, cls, dim, val in (('p', 'volScalarField', '[1 -1 -2 0 0 0 0]', 'uniform 1'),
-                             ('rho', 'volScalarField', '[1 -3 0 0 0 0 0]', 'uniform 1.4'),
-                             ('U', 'volVectorField', '[0 1 -1 0 0 0 0]', 'uniform (0 0 0)')):
-    w('0/' + name, cls, name, f'dimensions {dim};\ninternalField {val};\n'
-      'boundaryField { open { type zeroGradient; } }\n')
