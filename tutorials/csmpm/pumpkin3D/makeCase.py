@@ -3,7 +3,7 @@
 into directory D: python3 makeCase.py D [n=64] [tEnd=0.1] [write=0.02]
 [material=neoHookean] [E=1.5e3] [nu=0.25] [rhoS=10] [yield=600]
 [residual=-1] [eta=0] [pIn=300] [rhoIn=30] [lobes=8] [groove=0.1]
-[thickness=0.06] [np=1] [substeps=32]
+[thickness=0.06] [np=1] [substeps=32] [vary=0] [seed=1]
 
 The unit cube, n^3 cells, `open` (outlets) all round, gas rho 1.4, p 1.
 A pumpkin centred at (0.5, 0.5, 0.45): an oblate shell (horizontal outer
@@ -16,7 +16,9 @@ ellipsoid of hot compressed gas (rhoIn, pIn) filling 0.85 of the inner
 surface.  The shell and stem's cells hold 2 x 2 x 2 particles each;
 material neoHookean (Table 3.1's elastic pumpkin, E 1.5e3) or henckyJ2
 (its plastic one: E 2e4, yield 600; 'residual' and 'eta' its softening,
-by default none).  The cell sets are computed here (blockMesh numbers the
+by default none).  vary > 0: each particle's mass times 1 + vary xi,
+xi uniform in [-1, 1] hashed from seed and its position (mpmSetParticles'
+densityVariation, as shellExplosion2D's ring).  The cell sets are computed here (blockMesh numbers the
 cells i + n (j + n k)) and written to constant/cellSets (Allrun copies
 them to constant/polyMesh/sets after blockMesh) for topoSet
 (the shell's cellZone) and setFields (the hot gas).  np > 1 writes a
@@ -29,7 +31,7 @@ from csmpmCase import Case, material, parameters
 a = parameters(dict(n=64, tEnd=0.1, write=0.02, material='neoHookean',
                     E=1.5e3, nu=0.25, rhoS=10.0, residual=-1.0, eta=0.0,
                     pIn=300.0, rhoIn=30.0, lobes=8, groove=0.1,
-                    thickness=0.06, np=1, substeps=32,
+                    thickness=0.06, np=1, substeps=32, vary=0.0, seed=1,
                     **{'yield': 600.0}), sys.argv[2:])
 d = sys.argv[1]
 n = int(a['n']); dx = 1.0/n
@@ -85,8 +87,10 @@ case.common(a['tEnd'], a['write'], 17,
             'order couplingFirst; ghostInit ambient; '
             f'solidSubsteps {a["substeps"]};\n    energyAudit yes;',
             f'pumpkin {{ {material(a)} }}')
-w('system/mpmSetParticlesDict', 'dictionary', 'mpmSetParticlesDict', '''
-regions ( pumpkin { type cellZone; zone pumpkin; material pumpkin; perCell 2; } );
+vary = (f' densityVariation {{ amplitude {a["vary"]}; seed {int(a["seed"])}; }}'
+        if a['vary'] > 0 else '')
+w('system/mpmSetParticlesDict', 'dictionary', 'mpmSetParticlesDict', f'''
+regions ( pumpkin {{ type cellZone; zone pumpkin; material pumpkin; perCell 2;{vary} }} );
 ''')
 if a['np'] > 1:
     npr = a['np']
