@@ -9,13 +9,14 @@ sys.path.insert(0, os.path.join(os.environ['MPMFOAM_DIR'], 'bin/tools')).
     Case(d)                      case directory d: .write(path, cls, obj,
                                  body) with the FoamFile header
     Case.unitCube(n)             blockMeshDict: n^3 cells, patch `open`
-    Case.common(tEnd, write, precision, coupling, materials)
+    Case.common(tEnd, write, precision, coupling, materials, mpm='')
                                  controlDict, fvSchemes, fvSolution,
                                  shockMpmDict (semi-implicit WENO5 RK3,
                                  CFL 0.5, outlets; the coupling entries
                                  given), thermophysicalProperties (gamma
                                  1.4, R 1), mpmProperties (bspline2, APIC;
-                                 the materials given), 0/p, 0/rho, 0/U
+                                 the materials given; mpm: more lines of
+                                 it), 0/p, 0/rho, 0/U
                                  (1, 1.4, at rest)
     material(a)                  the material dictionary's entries from
                                  a's material, rhoS, E, nu (henckyJ2: yield,
@@ -63,7 +64,7 @@ boundary
 );
 ''')
 
-    def common(self, tEnd, write, precision, coupling, materials):
+    def common(self, tEnd, write, precision, coupling, materials, mpm=''):
         w = self.write
         w('system/controlDict', 'dictionary', 'controlDict', f'''
 application shockMpmFoam; startFrom latestTime; startTime 0; stopAt endTime;
@@ -88,7 +89,7 @@ coupling {{ {coupling} }}
         w('constant/mpmProperties', 'dictionary', 'mpmProperties', f'''
 kernel bspline2; transfer APIC; CFL 0.5;
 materials {{ {materials} }}
-''')
+{mpm}''')
         for name, cls, dim, val in (
                 ('p', 'volScalarField', '[1 -1 -2 0 0 0 0]', 'uniform 1'),
                 ('rho', 'volScalarField', '[1 -3 0 0 0 0 0]', 'uniform 1.4'),

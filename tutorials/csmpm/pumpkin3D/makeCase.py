@@ -13,8 +13,9 @@ over a smooth inner surface 'thickness' below the outer one's mean: the
 grooves between the ribs are the thin parts (0.032 against 0.088 at the
 ribs by default).  A stem (radius 0.03, 0.06 tall) on top.  Inside, an
 ellipsoid of hot compressed gas (rhoIn, pIn) filling 0.85 of the inner
-surface.  The shell and stem's cells hold 2 x 2 x 2 particles each;
-material neoHookean (Table 3.1's elastic pumpkin, E 1.5e3) or henckyJ2
+surface.  The patch `open` is an outlet for the particles too: a fragment
+reaching it leaves the scene.  The shell and stem's cells hold 2 x 2 x 2
+particles each; material neoHookean (Table 3.1's elastic pumpkin, E 1.5e3) or henckyJ2
 (its plastic one: E 2e4, yield 600; 'residual' and 'eta' its softening,
 by default none).  vary > 0: each particle's mass times 1 + vary xi,
 xi uniform in [-1, 1] hashed from seed and its position (mpmSetParticles'
@@ -86,7 +87,8 @@ regions ( cellToCell {{ set hot; fieldValues ( volScalarFieldValue p {a["pIn"]}
 case.common(a['tEnd'], a['write'], 17,
             'order couplingFirst; ghostInit ambient; '
             f'solidSubsteps {a["substeps"]};\n    energyAudit yes;',
-            f'pumpkin {{ {material(a)} }}')
+            f'pumpkin {{ {material(a)} }}',
+            'boundary { open { type outlet; } }\n')
 vary = (f' densityVariation {{ amplitude {a["vary"]}; seed {int(a["seed"])}; }}'
         if a['vary'] > 0 else '')
 w('system/mpmSetParticlesDict', 'dictionary', 'mpmSetParticlesDict', f'''
