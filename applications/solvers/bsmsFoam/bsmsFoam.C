@@ -55,15 +55,26 @@ Usage
             solverSteps 50;     // M steps of the solver, from its state on
             solver      pimpleFoam;
             deltaT      0.02;   // the solver's step
+            reportJump  yes;    // the model's own steps beside each phase
         }
     \endverbatim
     Hybrid rollout (bsmsHybridSolver): every N model steps the state goes
     back to the solver, which runs M of its own steps (a whole number of
-    model steps) as its own process on the case's files, and the model goes
-    on from the solver's state; the solver's model times are read back and
-    written like the model's.  Without bsmsHybrid the rollout is pure
-    (N = infinity).  The log's last lines give the solver phases' share of
-    the cost.  Serial only.
+    model steps; or solverModelSteps K, K model steps' time) as its own
+    process on the case's files, and the model goes on from the solver's
+    state; the solver's model times are read back and written like the
+    model's.  Without bsmsHybrid the rollout is pure (N = infinity; a
+    hybrid whose N exceeds the run's steps is the pure rollout bit for
+    bit).  Each handover's log line gives the solver's phase, its cost
+    and (reportJump, default yes) the jump it removed: how far the
+    model's own steps over the phase would lie from the solver's state,
+    RMS per output field.  The log's last lines give the solver phases'
+    share of the cost.  Serial only.  For a model of moving bodies the
+    handover rebuilds the MPM state from the predicted points
+    (lagrangianHandover: F from the deformation of the graph's mesh, U
+    from the last two predicted positions, stress from F through the
+    material; elastic materials only), and the solver, umlsMpmFoam,
+    takes solverModelSteps (it chooses its own step).
 
 \*---------------------------------------------------------------------------*/
 
@@ -272,7 +283,10 @@ int main(int argc, char *argv[])
     label nSolverTimes = 0;
     label sinceHandover = 0;
     double modelSeconds = 0;
-    char buf[200];
+    double jumpSeconds = 0;
+    std::size_t nState = 0;
+    for (const label c : spec.inputComponents) nState += c;
+    char buf[300];
     // The solver's phase from the current time, if one is due and fits
     // before the end time: its model times read back, written as ours
     auto solverPhase = [&]()
@@ -281,6 +295,21 @@ int main(int argc, char *argv[])
         const scalar tEnd =
             runTime.value() + hybrid->phaseModelSteps()*spec.deltaT;
         if (tEnd > runTime.endTime().value() + 0.5*spec.deltaT) return;
+        // The model's own steps over the phase, for the jump
+        std::vector<double> shadow(global);
+        bool shadowOk = hybrid->reportJump();
+        const auto tj = std::chrono::steady_clock::now();
+        for (label k = 0; shadowOk && k < hybrid->phaseModelSteps(); ++k)
+        {
+            shadowOk = model->advance(shadow);
+        }
+        jumpSeconds += std::chrono::duration<double>
+        (
+            std::chrono::steady_clock::now() - tj
+        ).count();
+        const scalar tStart = runTime.value();
+        const double s0 = hybrid->solverSeconds();
+
         hybrid->runPhase(spec.outputFields);
         for (label k = 1; k <= hybrid->phaseModelSteps(); ++k)
         {
@@ -299,6 +328,50 @@ int main(int argc, char *argv[])
                 << hybrid->nPhases() << nl;
             runTime.write();
         }
+        std::snprintf
+        (
+            buf, sizeof(buf),
+            "Handover %d at t = %g: %s to t = %g, %.3f s",
+            int(hybrid->nPhases()), tStart, hybrid->solver().c_str(),
+            runTime.value(), hybrid->solverSeconds() - s0
+        );
+        Info<< buf;
+        if (hybrid->reportJump() && !shadowOk)
+        {
+            Info<< "; the model alone went non-finite over the phase";
+        }
+        else if (hybrid->reportJump())
+        {
+            // Per output field: RMS over cells and components of the
+            // solver's state less the model's own
+            Info<< "; the model alone would lie";
+            label o = 0;
+            forAll(spec.inputFields, i)
+            {
+                const label nc = spec.inputComponents[i];
+                if (spec.outputFields.found(spec.inputFields[i]))
+                {
+                    double sum = 0;
+                    for (std::size_t c = 0; c < global.size(); c += nState)
+                    {
+                        for (label d = 0; d < nc; ++d)
+                        {
+                            sum += sqr(global[c + o + d] - shadow[c + o + d]);
+                        }
+                    }
+                    std::snprintf
+                    (
+                        buf, sizeof(buf), " %s RMS %.3e",
+                        spec.inputFields[i].c_str(),
+                        std::sqrt(sum/max(double(global.size()/nState*nc), 1.0))
+                    );
+                    Info<< buf;
+                }
+                o += nc;
+            }
+            Info<< " from it: the jump removed";
+        }
+        Info<< nl;
         sinceHandover = 0;
     };
     while (runTime.run())
@@ -355,29 +428,23 @@ int main(int argc, char *argv[])
     const double wall = std::chrono::duration<double>
     (
         std::chrono::steady_clock::now() - t0
-    ).count();
+    ).count() - jumpSeconds;
     const scalar simulated = (nModelSteps + nSolverTimes)*spec.deltaT;
     std::snprintf
     (
         buf, sizeof(buf),
         "%d model steps in %.3f s (%.2f ms per step, model only %.2f ms);"
         " %.4f s per unit of simulated time",
-        int(nModelSteps), wall, 1e3*wall/max(nModelSteps, label(1)),
+        int(nModelSteps), wall,
+        1e3*(wall - (hybrid ? hybrid->solverSeconds() : 0))
+       /max(nModelSteps, label(1)),
         1e3*modelSeconds/max(nModelSteps, label(1)),
         wall/max(simulated, SMALL)
     );
     Info<< nl << buf << nl;
     if (hybrid)
     {
-        std::snprintf
-        (
-            buf, sizeof(buf),
-            "Hybrid rollout: %d solver phases (%d model times) in %.3f s"
-            " (the solver's processes, start-up included), %d model steps",
-            int(hybrid->nPhases()), int(nSolverTimes),
-            hybrid->solverSeconds(), int(nModelSteps)
-        );
-        Info<< buf << nl;
+        Info<< hybrid->summary(nSolverTimes, nModelSteps, jumpSeconds).c_str() << nl;
     }
     rangeSummary();
     Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"

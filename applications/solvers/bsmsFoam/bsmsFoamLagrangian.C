@@ -5,6 +5,9 @@
 
 #include "bsmsFoamLagrangian.H"
 #include "lagrangianStepper.H"
+#include "lagrangianHandover.H"
+#include "bsmsHybridSolver.H"
+#include "IFstream.H"
 #include "bsmsExport.H"
 #include "bsmsTrainerFacade.H"
 #include "dictionaryChecks.H"
@@ -144,6 +147,46 @@ void writeCloud
     }
 }
 
+
+//- The solver's steps in its log (umlsMpmFoam's "Particle-steps per
+//  second: R (S steps, ..."), -1 if not found
+label solverStepsIn(const fileName& log)
+{
+    IFstream is(log);
+    string line;
+    label steps = -1;
+    while (is.good() && is.getLine(line).good())
+    {
+        const auto at = line.find("Particle-steps per second:");
+        if (at == string::npos) continue;
+        const auto open = line.find('(', at);
+        if (open != string::npos)
+        {
+            steps = label(std::atol(line.c_str() + open + 1));
+        }
+    }
+    return steps;
+}
+
+
+//- RMS and largest distance between the first n points of a and b
+std::pair<scalar, scalar> distances
+(
+    const pointField& a,
+    const pointField& b,
+    const label n
+)
+{
+    scalar sum = 0, most = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar d2 = magSqr(a[i] - b[i]);
+        sum += d2;
+        most = max(most, d2);
+    }
+    return {std::sqrt(sum/max(n, label(1))), std::sqrt(most)};
+}
+
 } // End anonymous namespace
 
 
@@ -253,20 +296,148 @@ int Foam::bsmsFoamLagrangian
             << " solver's state, which a rollout does not have)" << nl << endl;
     }
     runTime.functionObjects().off();
+
+    // Hybrid rollout: every N model steps the solver (umlsMpmFoam) runs
+    // K model steps' time from the state rebuilt from the model's
+    const dictionary& controlDict = runTime.controlDict();
+    std::unique_ptr<bsmsHybridSolver> hybrid
+    (
+        bsmsHybridSolver::active(controlDict)
+      ? new bsmsHybridSolver(mesh, controlDict, deltaT, true)
+      : nullptr
+    );
+    std::unique_ptr<lagrangianHandover> handover
+    (
+        hybrid
+      ? new lagrangianHandover
+        (
+            mesh, cloudName, r, controlDict.subDict("bsmsHybrid")
+        )
+      : nullptr
+    );
+
     runTime.setDeltaT(deltaT);
     const auto t0 = std::chrono::steady_clock::now();
     label nSteps = 0;
+    label nSolverTimes = 0;
+    label sinceHandover = 0;
     double modelSeconds = 0;
+    double jumpSeconds = 0;
     bool written = true;
-    char buf[200];
+    char buf[300];
+
+    // One model step from xPrev, x at the current time into out; false
+    // (node in bad) if not finite
+    auto modelStep = [&]
+    (
+        const pointField& xp, const pointField& xk, const scalar t,
+        pointField& out, label& bad
+    )
+    {
+        pointField xNext(xk);
+        r.moveActuators(t + deltaT, xNext);
+        return stepper.step(model, xp, xk, xNext, out, bad);
+    };
+
+    // The solver's phase from the current time, if one is due and fits
+    // before the end time: its model times read back, written as ours
+    auto solverPhase = [&]()
+    {
+        if (!hybrid || sinceHandover < hybrid->modelSteps()) return;
+        const label K = hybrid->phaseModelSteps();
+        const scalar t1 = runTime.value() + K*deltaT;
+        if (t1 > runTime.endTime().value() + 0.5*deltaT) return;
+        const fileName here(runTime.timePath());
+        const fileName start(hybrid->startPhase());
+        handover->write(x, xPrev, deltaT);
+        if (isDir(start/cloud::prefix)) rmDir(start/cloud::prefix);
+        cp(here/cloud::prefix, start/cloud::prefix);
+        if (!written) rmDir(here);
+
+        // The model's own steps over the phase, for the jump
+        pointField xs(x), xsPrev(xPrev);
+        bool shadow = hybrid->reportJump();
+        const auto tj = std::chrono::steady_clock::now();
+        for (label k = 0; shadow && k < K; ++k)
+        {
+            pointField out;
+            label bad = -1;
+            shadow = modelStep(xsPrev, xs, runTime.value() + k*deltaT, out, bad);
+            xsPrev.transfer(xs);
+            xs.transfer(out);
+        }
+        jumpSeconds += std::chrono::duration<double>
+        (
+            std::chrono::steady_clock::now() - tj
+        ).count();
+
+        const double s0 = hybrid->solverSeconds();
+        hybrid->solve();
+        for (label k = 1; k <= K; ++k)
+        {
+            ++runTime;
+            const fileName from(hybrid->phaseTime(k));
+            mkDir(runTime.timePath());
+            if (isDir(runTime.timePath()/cloud::prefix))
+            {
+                rmDir(runTime.timePath()/cloud::prefix);
+            }
+            cp(from/cloud::prefix, runTime.timePath()/cloud::prefix);
+            pointField xNew;
+            handover->read(xNew);
+            xPrev.transfer(x);
+            x.transfer(xNew);
+            ++nSolverTimes;
+            written = runTime.writeTime();
+            if (written)
+            {
+                runTime.writeNow();
+            }
+            else
+            {
+                rmDir(runTime.timePath());
+            }
+        }
+        const label steps = solverStepsIn(hybrid->lastLog());
+        std::snprintf
+        (
+            buf, sizeof(buf),
+            "Handover %d at t = %g: %s to t = %g in %d steps, %.3f s",
+            int(hybrid->nPhases()), t1 - K*deltaT, hybrid->solver().c_str(),
+            runTime.value(), int(steps), hybrid->solverSeconds() - s0
+        );
+        Info<< buf;
+        if (hybrid->reportJump())
+        {
+            if (shadow)
+            {
+                const auto d = distances(x, xs, r.nPoints());
+                std::snprintf
+                (
+                    buf, sizeof(buf),
+                    "; the model alone would lie RMS %.3e m (max %.3e m)"
+                    " from it: the jump removed",
+                    d.first, d.second
+                );
+                Info<< buf;
+            }
+            else
+            {
+                Info<< "; the model alone went non-finite over the phase";
+            }
+        }
+        Info<< nl;
+        sinceHandover = 0;
+    };
+
     while (runTime.run())
     {
-        pointField xNext(x);
-        r.moveActuators(runTime.value() + deltaT, xNext);
+        solverPhase();
+        if (!runTime.run()) break;
         pointField out;
         label bad = -1;
         const auto ts0 = std::chrono::steady_clock::now();
-        const bool ok = stepper.step(model, xPrev, x, xNext, out, bad);
+        const bool ok = modelStep(xPrev, x, runTime.value(), out, bad);
         const double sec = std::chrono::duration<double>
         (
             std::chrono::steady_clock::now() - ts0
@@ -289,6 +460,7 @@ int Foam::bsmsFoamLagrangian
         }
         ++runTime;
         ++nSteps;
+        ++sinceHandover;
         xPrev.transfer(x);
         x.transfer(out);
         std::snprintf(buf, sizeof(buf), "model step %.1f ms", 1e3*sec);
@@ -305,17 +477,24 @@ int Foam::bsmsFoamLagrangian
     (
         std::chrono::steady_clock::now() - t0
     ).count();
+    const double wallCounted = wall - jumpSeconds;
     std::snprintf
     (
         buf, sizeof(buf),
         "%d model steps in %.3f s (%.2f ms per step, model only %.2f ms);"
         " %.4f s per unit of simulated time",
-        int(nSteps), wall, 1e3*wall/max(nSteps, label(1)),
+        int(nSteps), wallCounted,
+        1e3*(wallCounted - (hybrid ? hybrid->solverSeconds() : 0))
+       /max(nSteps, label(1)),
         1e3*modelSeconds/max(nSteps, label(1)),
-        wall/max(nSteps*deltaT, SMALL)
+        wallCounted/max((nSteps + nSolverTimes)*deltaT, SMALL)
     );
-    Info<< nl << buf << nl
-        << "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
+    Info<< nl << buf << nl;
+    if (hybrid)
+    {
+        Info<< hybrid->summary(nSolverTimes, nSteps, jumpSeconds).c_str() << nl;
+    }
+    Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
         << "  ClockTime = " << runTime.elapsedClockTime() << " s"
         << nl << nl << "End" << nl << endl;
     return 0;

@@ -13,6 +13,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 using namespace Foam::dictionaryChecks;
@@ -50,6 +51,17 @@ void copyFieldFiles(const Foam::fileName& from, const Foam::fileName& to)
     }
 }
 
+
+//- Write a registered object to file, whatever its instance (the header,
+//  its data, the end divider)
+void writeFile(const Foam::regIOobject& obj, const Foam::fileName& file)
+{
+    Foam::OFstream os(file);
+    obj.writeHeader(os);
+    obj.writeData(os);
+    Foam::IOobject::writeEndDivider(os);
+}
+
 } // End anonymous namespace
 
 
@@ -65,7 +77,8 @@ Foam::bsmsHybridSolver::bsmsHybridSolver
 (
     const fvMesh& mesh,
     const dictionary& controlDict,
-    const scalar modelDeltaT
+    const scalar modelDeltaT,
+    const bool solverChoosesStep
 )
 :
     mesh_(mesh),
@@ -73,6 +86,8 @@ Foam::bsmsHybridSolver::bsmsHybridSolver
     solverSteps_(1),
     solverDeltaT_(0),
     modelDeltaT_(modelDeltaT),
+    solverChoosesStep_(solverChoosesStep),
+    reportJump_(true),
     phaseModelSteps_(1),
     controlDict_(controlDict),
     dir_(mesh.time().path()/"bsmsHybrid"),
@@ -97,7 +112,6 @@ Foam::bsmsHybridSolver::bsmsHybridSolver
             << exit(FatalIOError);
     }
     modelSteps_ = requiredCount(d, "modelSteps");
-    solverSteps_ = requiredCount(d, "solverSteps");
     solver_ = getAsOrDefault<word>
     (
         d, "solver", controlDict.get<word>("application"),
@@ -107,34 +121,98 @@ Foam::bsmsHybridSolver::bsmsHybridSolver
     {
         badEntry(d, "solver", solver_, "the solver the model replaces");
     }
-    solverDeltaT_ = getPositive
+    reportJump_ = getAsOrDefault<bool>
     (
-        d, "deltaT", controlDict.get<scalar>("deltaT")
+        d, "reportJump", true, "yes or no (true or false)"
     );
-    const scalar span = solverSteps_*solverDeltaT_;
-    const scalar ratio = span/modelDeltaT_;
-    phaseModelSteps_ = label(std::round(ratio));
-    if (phaseModelSteps_ < 1 || mag(ratio - phaseModelSteps_) > 1e-6*ratio)
+    const bool inModelSteps = d.found("solverModelSteps", keyType::LITERAL);
+    if (solverChoosesStep_)
     {
-        FatalIOErrorInFunction(d)
-            << "Entries 'solverSteps' " << solverSteps_ << " and 'deltaT' "
-            << solverDeltaT_ << " in " << d.name() << ": a solver phase"
-            << " spans " << span << ", which is not a whole number of model"
-            << " steps of " << modelDeltaT_ << nl
-            << "    allowed: solverSteps x deltaT = k x " << modelDeltaT_
-            << " for a whole k >= 1 (e.g. solverSteps "
-            << max(label(1), label(std::round(modelDeltaT_/solverDeltaT_)))
-            << ")" << exit(FatalIOError);
+        // The solver's step is its own (CFL): the phase in model steps
+        for (const char* key : {"solverSteps", "deltaT"})
+        {
+            if (d.found(key, keyType::LITERAL))
+            {
+                badEntry
+                (
+                    d, key, entryText(d, key),
+                    "no such entry: " + solver_ + " chooses its own time"
+                    " step, so a phase is given as solverModelSteps K"
+                    " (K model steps' time)"
+                );
+            }
+        }
+        phaseModelSteps_ = requiredCount(d, "solverModelSteps");
+        solverSteps_ = -1;
+    }
+    else if (inModelSteps)
+    {
+        if (d.found("solverSteps", keyType::LITERAL))
+        {
+            badEntry
+            (
+                d, "solverSteps", entryText(d, "solverSteps"),
+                "either solverSteps or solverModelSteps, not both"
+            );
+        }
+        phaseModelSteps_ = requiredCount(d, "solverModelSteps");
+        solverDeltaT_ = getPositive
+        (
+            d, "deltaT", controlDict.get<scalar>("deltaT")
+        );
+        const scalar steps = phaseModelSteps_*modelDeltaT_/solverDeltaT_;
+        solverSteps_ = label(std::round(steps));
+        if (solverSteps_ < 1 || mag(steps - solverSteps_) > 1e-6*steps)
+        {
+            badEntry
+            (
+                d, "deltaT", entryText(d, "deltaT"),
+                "a solver step that divides the phase of "
+              + Foam::name(phaseModelSteps_) + " model steps of "
+              + Foam::name(modelDeltaT_)
+            );
+        }
+    }
+    else
+    {
+        solverSteps_ = requiredCount(d, "solverSteps");
+        solverDeltaT_ = getPositive
+        (
+            d, "deltaT", controlDict.get<scalar>("deltaT")
+        );
+        const scalar span = solverSteps_*solverDeltaT_;
+        const scalar ratio = span/modelDeltaT_;
+        phaseModelSteps_ = label(std::round(ratio));
+        if (phaseModelSteps_ < 1 || mag(ratio - phaseModelSteps_) > 1e-6*ratio)
+        {
+            FatalIOErrorInFunction(d)
+                << "Entries 'solverSteps' " << solverSteps_ << " and 'deltaT' "
+                << solverDeltaT_ << " in " << d.name() << ": a solver phase"
+                << " spans " << span << ", which is not a whole number of model"
+                << " steps of " << modelDeltaT_ << nl
+                << "    allowed: solverSteps x deltaT = k x " << modelDeltaT_
+                << " for a whole k >= 1 (e.g. solverSteps "
+                << max(label(1), label(std::round(modelDeltaT_/solverDeltaT_)))
+                << ")" << exit(FatalIOError);
+        }
     }
     controlDict_.remove("bsmsHybrid");
     controlDict_.remove("functions");
     controlDict_.remove("bsmsModel");
     controlDict_.remove("bsmsRangeWarning");
     makeSubCase();
-    Info<< "Hybrid rollout: " << modelSteps_ << " model steps, then "
-        << solverSteps_ << " steps of " << solver_ << " (deltaT "
-        << solverDeltaT_ << ", " << phaseModelSteps_ << " model step(s)),"
-        << " in " << dir_ << nl;
+    Info<< "Hybrid rollout: " << modelSteps_ << " model steps, then ";
+    if (solverChoosesStep_)
+    {
+        Info<< phaseModelSteps_ << " model step(s) of " << solver_
+            << " (its own time step)";
+    }
+    else
+    {
+        Info<< solverSteps_ << " steps of " << solver_ << " (deltaT "
+            << solverDeltaT_ << ", " << phaseModelSteps_ << " model step(s))";
+    }
+    Info<< ", in " << dir_ << nl;
 }
 
 
@@ -165,12 +243,21 @@ void Foam::bsmsHybridSolver::writeControlDict
     d.set("startTime", t0);
     d.set("stopAt", word("endTime"));
     d.set("endTime", t1);
-    d.set("deltaT", solverDeltaT_);
-    d.set("adjustTimeStep", false);
-    d.set("writeControl", word("runTime"));
+    if (solverChoosesStep_)
+    {
+        // Its own step, cut to land on the model's times
+        d.set("writeControl", word("adjustableRunTime"));
+    }
+    else
+    {
+        d.set("deltaT", solverDeltaT_);
+        d.set("adjustTimeStep", false);
+        d.set("writeControl", word("runTime"));
+    }
     d.set("writeInterval", modelDeltaT_);
     d.set("timePrecision", 12);
     OFstream os(dir_/"system"/"controlDict");
+    os.precision(15);
     IOobject::writeBanner(os);
     os  << "FoamFile\n{\n    version 2.0;\n    format ascii;\n"
         << "    class dictionary;\n    object controlDict;\n}\n\n"
@@ -201,53 +288,34 @@ Foam::word Foam::bsmsHybridSolver::solverTimeName(const scalar t) const
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::bsmsHybridSolver::runPhase(const wordList& outputs)
+Foam::fileName Foam::bsmsHybridSolver::startPhase()
+{
+    const word tName(Time::timeName(mesh_.time().value(), 12));
+    const fileName start(dir_/tName);
+
+    // The solver's last fields, for the handed-over ones to go over; the
+    // earlier phases' time directories go
+    copyFieldFiles(lastSolverTime_, start);
+    for (const fileName& d : readDir(dir_, fileName::DIRECTORY))
+    {
+        scalar v;
+        if (d != tName && readScalar(d, v)) rmDir(dir_/d);
+    }
+    return start;
+}
+
+
+void Foam::bsmsHybridSolver::solve()
 {
     const Time& runTime = mesh_.time();
     const scalar t0 = runTime.value();
     const scalar t1 = t0 + phaseModelSteps_*modelDeltaT_;
     const word tName(Time::timeName(t0, 12));
-    const fileName start(dir_/tName);
-
-    // The solver's last fields, the model's outputs over them
-    copyFieldFiles(lastSolverTime_, start);
-    if (lastSolverTime_.path() == dir_ && lastSolverTime_ != start)
-    {
-        rmDir(lastSolverTime_);
-    }
-    for (const word& f : outputs)
-    {
-        const IOobject io
-        (
-            f, fileName("bsmsHybrid")/tName, mesh_,
-            IOobject::NO_READ, IOobject::NO_WRITE, false
-        );
-        if (mesh_.foundObject<volScalarField>(f))
-        {
-            volScalarField(io, mesh_.lookupObject<volScalarField>(f)).write();
-        }
-        else
-        {
-            volVectorField(io, mesh_.lookupObject<volVectorField>(f)).write();
-        }
-    }
-    if (mesh_.foundObject<surfaceScalarField>("phi"))
-    {
-        surfaceScalarField
-        (
-            IOobject
-            (
-                "phi", fileName("bsmsHybrid")/tName, mesh_,
-                IOobject::NO_READ, IOobject::NO_WRITE, false
-            ),
-            mesh_.lookupObject<surfaceScalarField>("phi")
-        ).write();
-    }
     writeControlDict(t0, t1);
 
-    const fileName log(dir_/("log." + solver_ + "." + tName));
+    lastLog_ = dir_/("log." + solver_ + "." + tName);
     const std::string cmd =
-        "cd '" + dir_ + "' && " + solver_ + " > '" + log + "' 2>&1";
+        "cd '" + dir_ + "' && " + solver_ + " > '" + lastLog_ + "' 2>&1";
     const auto ts = std::chrono::steady_clock::now();
     const int rc = std::system(cmd.c_str());
     solverSeconds_ += std::chrono::duration<double>
@@ -264,19 +332,50 @@ void Foam::bsmsHybridSolver::runPhase(const wordList& outputs)
             << solver_ << " from t = " << t0 << " to " << t1 << ") failed"
             << (rc != 0 ? " (exit status " + Foam::name(rc) + ")" : "")
             << (endName.size() ? "" : ", no time " + Time::timeName(t1, 12))
-            << "; see " << log << exit(FatalError);
+            << "; see " << lastLog_ << exit(FatalError);
     }
 }
 
 
-void Foam::bsmsHybridSolver::readBack
-(
-    const wordList& names,
-    const label k
-)
+void Foam::bsmsHybridSolver::runPhase(const wordList& outputs)
 {
-    const Time& runTime = mesh_.time();
-    const scalar t = runTime.value();
+    const fileName start(startPhase());
+    // Written by hand: regIOobject::write puts any object that is not in
+    // system/ or constant/ into the current time's directory of the case
+    for (const word& f : outputs)
+    {
+        if (const auto* sf = mesh_.findObject<volScalarField>(f))
+        {
+            writeFile(*sf, start/f);
+        }
+        else
+        {
+            writeFile(mesh_.lookupObject<volVectorField>(f), start/f);
+        }
+    }
+    if (const auto* phi = mesh_.findObject<surfaceScalarField>("phi"))
+    {
+        writeFile(*phi, start/"phi");
+    }
+    // The solver's old times of the handed-over fields belong to its own
+    // last state, a phase old, not to the model's: without them it starts
+    // as from a fresh start (backward: one Euler step)
+    wordList handed(outputs);
+    handed.append("phi");
+    for (const word& f : handed)
+    {
+        for (const word old : {f + "_0", f + "_0_0"})
+        {
+            if (isFile(start/old)) rm(start/old);
+        }
+    }
+    solve();
+}
+
+
+Foam::fileName Foam::bsmsHybridSolver::phaseTime(const label k)
+{
+    const scalar t = mesh_.time().value();
     const word tName(solverTimeName(t));
     if (tName.empty())
     {
@@ -286,6 +385,44 @@ void Foam::bsmsHybridSolver::readBack
             << " in " << dir_ << " (model time " << k << " of its phase)"
             << exit(FatalError);
     }
+    // The solver's own fields (p, phi, ...) of this time for the next
+    // handover
+    if (k == phaseModelSteps_)
+    {
+        lastSolverTime_ = dir_/tName;
+    }
+    return dir_/tName;
+}
+
+
+std::string Foam::bsmsHybridSolver::summary
+(
+    const label nSolverTimes,
+    const label nModelSteps,
+    const double jumpSeconds
+) const
+{
+    char buf[300];
+    std::snprintf
+    (
+        buf, sizeof(buf),
+        "Hybrid rollout: %d solver phases (%d model times) in %.3f s"
+        " (the solver's processes, start-up included), %d model steps;"
+        " the jumps' model steps %.3f s (not counted above)",
+        int(nPhases_), int(nSolverTimes), solverSeconds_, int(nModelSteps),
+        jumpSeconds
+    );
+    return buf;
+}
+
+
+void Foam::bsmsHybridSolver::readBack
+(
+    const wordList& names,
+    const label k
+)
+{
+    const word tName(phaseTime(k).name());
     for (const word& f : names)
     {
         const IOobject io
@@ -305,12 +442,6 @@ void Foam::bsmsHybridSolver::readBack
                 const_cast<volVectorField&>(mesh_.lookupObject<volVectorField>(f));
             v == volVectorField(io, mesh_);
         }
-    }
-    // The solver's own fields (p, phi, ...) of this time for the next
-    // handover
-    if (k == phaseModelSteps_)
-    {
-        lastSolverTime_ = dir_/tName;
     }
 }
 

@@ -6,27 +6,11 @@ Prints: the cloud's points, the largest difference of its x from the
 rollout's columns of final_<case>.dat (the material points in the order of
 their id), the largest from the recording's columns [m].
 """
-import re
-import struct
+import os
 import sys
 
-
-def field(path, width, code):
-    """The values of an IOField (ascii or binary), width numbers each."""
-    raw = open(path, 'rb').read()
-    head = raw.index(b'FoamFile')
-    end = raw.index(b'}', head)
-    binary = b'binary' in raw[head:end]
-    m = re.compile(rb'\s(\d+)\s*\(').search(raw, end + 1)
-    n, start = int(m.group(1)), m.end()
-    if binary:
-        size = struct.calcsize('<' + code)
-        flat = struct.unpack('<%d%s' % (n*width, code), raw[start:start + n*width*size])
-    else:
-        text = raw[start:].decode()
-        flat = [float(t) if code == 'd' else int(t)
-                for t in re.findall(r'[-+0-9.eE]+', text)[:n*width]]
-    return [tuple(flat[i*width:(i + 1)*width]) for i in range(n)]
+sys.path.insert(0, os.path.join(os.environ['MPMFOAM_DIR'], 'bin', 'tools'))
+from cloudError import field  # noqa: E402
 
 
 cloud, final = sys.argv[1], sys.argv[2]

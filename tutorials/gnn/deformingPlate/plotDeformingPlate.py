@@ -4,7 +4,8 @@
 run/deformingPlate.png, left: the RMSE of the material points' positions
 against rollout step for every held-out trajectory, BSMS-GNN (solid) and
 the two trivial baselines, holding the state (dashed) and moving on at the
-last velocity (dotted).  Right: the first held-out trajectory at its last
+last velocity (dotted); for the first held-out one also bsmsFoam's pure
+(black) and hybrid (magenta) rollouts.  Right: the first held-out trajectory at its last
 frame, the plate's mid-section z = 0.15 m (material points within 6 mm of
 it), rolled out (red) and recorded by umlsMpmFoam (black).
 """
@@ -37,6 +38,16 @@ for k, f in enumerate(files):
     ax.plot(steps, [1e3*v[1] for v in r], '-', color=c, label=name + ' BSMS-GNN')
     ax.plot(steps, [1e3*v[2] for v in r], '--', color=c, lw=0.8)
     ax.plot(steps, [1e3*v[3] for v in r], ':', color=c, lw=0.8)
+# bsmsFoam's pure and hybrid rollouts of the first held-out case
+# (Allrun: cloudError.py's error.dat, time and RMSE per frame)
+for run, style in (('bsmsFoam', 'k-'), ('bsmsHybrid', 'm-')):
+    f = os.path.join(here, 'run', run, 'error.dat')
+    if os.path.isfile(f):
+        r = rows(f)
+        t0 = r[0][0] - 0.01
+        ax.plot([round((v[0] - t0)/0.01) for v in r], [1e3*v[1] for v in r],
+                style, lw=2 if run == 'bsmsHybrid' else 1,
+                label=run + (' (hybrid)' if run == 'bsmsHybrid' else ' (pure)'))
 ax.set_xlabel('rollout step (0.01 s each)')
 ax.set_ylabel('RMSE of positions [mm]')
 ax.set_title('held-out rollouts: BSMS-GNN (solid), hold (dashed), velocity (dotted)')
