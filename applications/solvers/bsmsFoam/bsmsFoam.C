@@ -85,6 +85,7 @@ Usage
 #include "bsmsHybridSolver.H"
 #include "dictionaryChecks.H"
 #include "bsmsFoamLagrangian.H"
+#include "bsmsReuseMemory.H"
 #include "IFstream.H"
 
 #include <chrono>
@@ -115,6 +116,10 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+
+    // torch's buffers reused step after step, not faulted in again
+    bsmsReuseMemory();
+
     #include "createTime.H"
     #include "createMesh.H"
 

@@ -162,6 +162,7 @@ Usage
 
 \*---------------------------------------------------------------------------*/
 
+#include "bsmsReuseMemory.H"
 #include "argList.H"
 #include "Time.H"
 #include "polyMesh.H"
@@ -535,6 +536,9 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+
+    // torch's buffers reused step after step, not faulted in again
+    bsmsReuseMemory();
 
     // Parallel: every rank sets up on the undecomposed case (the global
     // case, not processor<N>), as a serial run does.  No function objects
