@@ -377,6 +377,10 @@ int Foam::bsmsFoamLagrangian
         {
             ++runTime;
             const fileName from(hybrid->phaseTime(k));
+            ++nSolverTimes;
+            written = runTime.writeTime();
+            // The model goes on from the last two; others only if written
+            if (k < K - 1 && !written) continue;
             mkDir(runTime.timePath());
             if (isDir(runTime.timePath()/cloud::prefix))
             {
@@ -387,8 +391,6 @@ int Foam::bsmsFoamLagrangian
             handover->read(xNew);
             xPrev.transfer(x);
             x.transfer(xNew);
-            ++nSolverTimes;
-            written = runTime.writeTime();
             if (written)
             {
                 runTime.writeNow();
