@@ -222,9 +222,21 @@ def plot(study, results, targets, axis, path):
             continue
         ax.plot(x, y, markers[mi % len(markers)], color=cmap(ci % 10),
                 ms=6, alpha=0.85, zorder=3)
-        if labelBy and (len(ok) <= 40 or r.get("front")):
-            ax.annotate(" ".join(lab[n] for n in labelBy), (x, y),
+        if labelBy and (len(ok) <= 20 or r.get("front")):
+            ax.annotate(" ".join("%s=%s" % (n, lab[n]) for n in labelBy
+                                 if lab.get(n) != "(case)"), (x, y),
                         fontsize=6, xytext=(3, 3), textcoords="offset points")
+    # a reference that is the truth itself (error 0: the error is measured
+    # against its own run) has no place on a log axis: its cost is a line
+    for r in results:
+        if r.get("reference") and r.get("status") == "ok" \
+                and r.get("error") == 0 and fr.costOf(r, axis) is not None:
+            x = fr.costOf(r, axis)
+            ax.axvline(x, color="k", lw=0.7, ls="--")
+            ax.text(x, 0.98, " reference %d (error 0): %s"
+                    % (r["point"], _text(r, study)), fontsize=7,
+                    rotation=90, va="top", ha="right",
+                    transform=ax.get_xaxis_transform())
     frontPts = sorted([r for r in ok if r.get("front")],
                       key=lambda r: fr.costOf(r, axis))
     if frontPts:
@@ -259,8 +271,9 @@ def plot(study, results, targets, axis, path):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7, loc="best")
     if labelBy:
-        fig.text(0.01, 0.01, "labels: " + " ".join(labelBy) +
-                 (" (front points only)" if len(ok) > 40 else ""), fontsize=7)
+        fig.text(0.01, 0.01, "labels: the settings a point sets of " +
+                 " ".join(labelBy) +
+                 (" (front points only)" if len(ok) > 20 else ""), fontsize=7)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
