@@ -189,6 +189,17 @@ def plot(study, results, targets, axis, path):
     ok = [r for r in results if r.get("status") == "ok"
           and isinstance(r.get("error"), float) and r["error"] > 0
           and fr.costOf(r, axis) is not None]
+    # a reference that is the truth itself (its error is round-off, a
+    # millionth of the smallest other error, or 0: the error is measured
+    # against its own run) is drawn as a line at its cost, not as a point
+    # that would stretch the log axis
+    others = [r["error"] for r in ok if not r.get("reference")]
+    floor = 1e-6*min(others) if others else 0.0
+    truths = [r for r in results if r.get("reference")
+              and r.get("status") == "ok"
+              and isinstance(r.get("error"), float) and r["error"] <= floor
+              and fr.costOf(r, axis) is not None]
+    ok = [r for r in ok if r not in truths]
     cmap = plt.get_cmap("tab10")
     markers = "osD^v<>ph*"
 
@@ -226,17 +237,13 @@ def plot(study, results, targets, axis, path):
             ax.annotate(" ".join("%s=%s" % (n, lab[n]) for n in labelBy
                                  if lab.get(n) != "(case)"), (x, y),
                         fontsize=6, xytext=(3, 3), textcoords="offset points")
-    # a reference that is the truth itself (error 0: the error is measured
-    # against its own run) has no place on a log axis: its cost is a line
-    for r in results:
-        if r.get("reference") and r.get("status") == "ok" \
-                and r.get("error") == 0 and fr.costOf(r, axis) is not None:
-            x = fr.costOf(r, axis)
-            ax.axvline(x, color="k", lw=0.7, ls="--")
-            ax.text(x, 0.98, " reference %d (error 0): %s"
-                    % (r["point"], _text(r, study)), fontsize=7,
-                    rotation=90, va="top", ha="right",
-                    transform=ax.get_xaxis_transform())
+    for r in truths:
+        x = fr.costOf(r, axis)
+        ax.axvline(x, color="k", lw=0.7, ls="--")
+        ax.text(x, 0.98, " reference %d (error %.1e): %s"
+                % (r["point"], r["error"], _text(r, study)), fontsize=7,
+                rotation=90, va="top", ha="right",
+                transform=ax.get_xaxis_transform())
     frontPts = sorted([r for r in ok if r.get("front")],
                       key=lambda r: fr.costOf(r, axis))
     if frontPts:
