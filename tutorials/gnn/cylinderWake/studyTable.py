@@ -51,7 +51,10 @@ for r in sorted(ok, key=lambda r: float(r["wall_s"])):
                  r"^Training: (\d+) steps in ([\d.]+) s")
         m = grep(os.path.join(p, "log.solver"),
                  r"model steps in \S+ s \(([\d.]+) ms per step, model only ([\d.]+) ms")
-        solver = "bsmsFoam"
+        n = r.get("N", "(case)")
+        solver = "bsmsFoam" if n in ("0", "(case)") else \
+            "bsmsFoam, hybrid N %s K %s" % (
+                n, r.get("K") if r.get("K") not in (None, "(case)") else "1")
         width, levels = r["width"], r["levels"]
         budget = t[0] if t else r["trainSteps"]
         train = t[1] if t else "-"
