@@ -61,6 +61,8 @@ for r in sorted(ok, key=lambda r: float(r["wall_s"])):
         perStep = "%s (%s)" % m if m else "-"
     else:
         solver = "pimpleFoam, %s steps per model step" % r["substeps"]
+        if r.get("ranks") not in (None, "(case)", "1"):
+            solver += ", %s ranks" % r["ranks"]
         width = levels = budget = train = perStep = "-"
     print("| " + " | ".join([
         r["point"], solver, width, levels, budget, train,
