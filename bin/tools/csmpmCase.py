@@ -9,15 +9,19 @@ sys.path.insert(0, os.path.join(os.environ['MPMFOAM_DIR'], 'bin/tools')).
     Case(d)                      case directory d: .write(path, cls, obj,
                                  body) with the FoamFile header
     Case.unitCube(n)             blockMeshDict: n^3 cells, patch `open`
-    Case.common(tEnd, write, precision, coupling, materials, mpm='')
+    Case.common(tEnd, write, precision, coupling, materials, mpm='',
+                boundaries='open { type outlet; }', patches='open')
                                  controlDict, fvSchemes, fvSolution,
                                  shockMpmDict (semi-implicit WENO5 RK3,
-                                 CFL 0.5, outlets; the coupling entries
+                                 CFL 0.5, the gas's boundaries given
+                                 (outlets); the coupling entries
                                  given), thermophysicalProperties (gamma
                                  1.4, R 1), mpmProperties (bspline2, APIC;
                                  the materials given; mpm: more lines of
                                  it), 0/p, 0/rho, 0/U
-                                 (1, 1.4, at rest)
+                                 (1, 1.4, at rest; zeroGradient on
+                                 the patches that 'patches', a name or
+                                 a regular expression, matches)
     material(a)                  the material dictionary's entries from
                                  a's material, rhoS, E, nu (henckyJ2: yield,
                                  residual (< 0: the yield), eta)
@@ -64,7 +68,8 @@ boundary
 );
 ''')
 
-    def common(self, tEnd, write, precision, coupling, materials, mpm=''):
+    def common(self, tEnd, write, precision, coupling, materials, mpm='',
+               boundaries='open { type outlet; }', patches='open'):
         w = self.write
         w('system/controlDict', 'dictionary', 'controlDict', f'''
 application shockMpmFoam; startFrom latestTime; startTime 0; stopAt endTime;
@@ -81,7 +86,7 @@ interpolationSchemes { default linear; } snGradSchemes { default corrected; }
         w('system/fvSolution', 'dictionary', 'fvSolution', '\n')
         w('system/shockMpmDict', 'dictionary', 'shockMpmDict', f'''
 gas {{ stepper semiImplicit; scheme WENO5; timeIntegration RK3; CFL 0.5; }}
-boundaries {{ open {{ type outlet; }} }}
+boundaries {{ {boundaries} }}
 coupling {{ {coupling} }}
 ''')
         w('constant/thermophysicalProperties', 'dictionary',
@@ -90,12 +95,13 @@ coupling {{ {coupling} }}
 kernel bspline2; transfer APIC; CFL 0.5;
 materials {{ {materials} }}
 {mpm}''')
+        key = patches if patches.isidentifier() else f'"{patches}"'
         for name, cls, dim, val in (
                 ('p', 'volScalarField', '[1 -1 -2 0 0 0 0]', 'uniform 1'),
                 ('rho', 'volScalarField', '[1 -3 0 0 0 0 0]', 'uniform 1.4'),
                 ('U', 'volVectorField', '[0 1 -1 0 0 0 0]', 'uniform (0 0 0)')):
             w('0/' + name, cls, name, f'dimensions {dim};\ninternalField {val};\n'
-              'boundaryField { open { type zeroGradient; } }\n')
+              f'boundaryField {{ {key} {{ type zeroGradient; }} }}\n')
 
 
 def material(a):
