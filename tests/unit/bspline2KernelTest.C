@@ -14,6 +14,10 @@
 //    functions): P2G/G2P round trips of a uniform velocity keep the
 //    momentum and the kinetic energy to round-off (before the moments were
 //    taken about the weights' centre the momentum grew every trip)
+//  - APIC at the lattice's end: the fold's D_p vanishes at the end node,
+//    and a particle that took B at half a cell from it and nears it gives
+//    the grid bounded velocities only with the kernel's momentFloor
+//    (without it, 1e8 times the field's)
 //  - graded, perturbed, simplex and one-cell-thick meshes stop with a
 //    FatalIOError naming the entry kernel and the first offending cell
 
@@ -533,6 +537,66 @@ TEST(bspline2Kernel, apicMomentumNextToNotch)
         EXPECT_LT(mag(momentum() - m0), 1e-12*mag(m0)) << "G2P, trip " << trip;
         EXPECT_LE(kinetic(), e0*(1 + 1e-12)) << "G2P, trip " << trip;
     }
+}
+
+
+// APIC at the lattice's end (an outlet: particles reach the end before they
+// leave).  The fold's D_p along x is xi (1 - xi) h^2 at xi cells from the
+// end.  A particle takes B from the grid field v = (x, 0, 0) at xi = 0.4
+// (B_xx = D_p there), moves to xi = 1e-9 and deposits again: with C = B
+// D_p^-1 at its new place the node beside the end gets v_p + C h, about
+// 0.24/1e-9 h = 1.2e8; with bspline2's momentFloor (h^2/8) C is at most
+// 0.24/0.125 = 1.92 and every node's velocity stays below |v_p| + 1.92 h
+// < 5 (the field spans 0..4)
+TEST(bspline2Kernel, apicMomentFloorAtLatticeEnd)
+{
+    const label n[3] = {8, 6, 1};
+    const scalar h[3] = {0.5, 0.5, 1};
+    auto m = lattice(2, {0, 1, 2}, n, h, vector::zero);
+    IStringStream is("kernel bspline2; transfer APIC;");
+    const dictionary dict(is);
+    auto k = mpmKernel::New(dict, *m);
+    auto T = mpmTransfer::New(dict, *m);
+    const vector floor = k->momentFloor();
+    EXPECT_DOUBLE_EQ(floor.x(), 0.125*h[0]*h[0]);
+    EXPECT_DOUBLE_EQ(floor.y(), 0.125*h[1]*h[1]);
+
+    auto largestNodeSpeed = [&](bool floored)
+    {
+        T->setMomentFloor(floored ? floor : vector::zero);
+        mpmParticles P;
+        const scalar xOld = 4 - 0.4*h[0];
+        P.append(vector(xOld, 1.6, 0), vector(xOld, 0, 0), tensor::I, 1.0,
+                 0.25*h[0]*h[1], 0, 0);
+        mpmGrid grid(m->nVertices());
+        kernelWeights kw;
+        k->compute(P.x, labelList(1, 0), kw);
+        grid.activate(kw);
+        T->p2g(P, kw, grid);
+        for (const label i : grid.active)
+        {
+            grid.newVelocity[i] = vector(m->vertices()[i].x(), 0, 0);
+        }
+        T->g2p(kw, grid, P);
+        P.x[0] = vector(4 - 1e-9*h[0], 1.6, 0);
+        mpmGrid grid2(m->nVertices());
+        k->compute(P.x, labelList(1, 0), kw);
+        grid2.activate(kw);
+        T->p2g(P, kw, grid2);
+        scalar vmax = 0;
+        for (const label i : grid2.active)
+        {
+            if (grid2.mass[i] > 0)
+            {
+                vmax = max(vmax, mag(grid2.velocity[i]/grid2.mass[i]));
+            }
+        }
+        return vmax;
+    };
+    const scalar withFloor = largestNodeSpeed(true);
+    const scalar without = largestNodeSpeed(false);
+    EXPECT_LT(withFloor, 5) << "with bspline2's momentFloor";
+    EXPECT_GT(without, 1e6) << "without the floor (the defect it guards)";
 }
 
 

@@ -451,4 +451,15 @@ void Foam::bspline2Kernel::compute
 }
 
 
+Foam::vector Foam::bspline2Kernel::momentFloor() const
+{
+    vector f(Zero);
+    for (label a = 0; a < dim_; ++a)
+    {
+        f[axis_[a]] = 0.125*h_[a]*h_[a];
+    }
+    return f;
+}
+
+
 // ************************************************************************* //

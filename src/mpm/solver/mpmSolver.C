@@ -278,6 +278,7 @@ Foam::mpmSolver::mpmSolver
             " for APIC)"
         );
     }
+    transfer_->setMomentFloor(kernel_->momentFloor());
     forAll(materials_, k)
     {
         if (materials_[k].Fbar()) anyFbar_ = true;

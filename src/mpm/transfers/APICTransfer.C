@@ -76,6 +76,15 @@ void Foam::APICTransfer::p2g
             const vector d = mesh_.delta(xv[kw.vertex[k]], xp) - c;
             D += kw.w[k]*(d*d);
         }
+        if (floored_)
+        {
+            // The kernel's floor (bspline2 at the lattice's ends)
+            for (direction a = 0; a < 3; ++a)
+            {
+                const label aa = 4*a;
+                if (D[aa] < momentFloor_[a]) D[aa] = momentFloor_[a];
+            }
+        }
         const tensor C = P.B[p] & (inv(D) - Q);
 
         const scalar mp = P.m[p];
