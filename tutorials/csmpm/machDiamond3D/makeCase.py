@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Write the koalas over Mach-diamond jets (dissertation 3.3.2, Fig. 3.19,
-Table 3.1) into directory D: python3 makeCase.py D [n=64] [tEnd=1]
+Table 3.1) into directory D: python3 makeCase.py D [n=64] [tEnd=1.4]
 [write=0.1] [M=3] [pRatio=0.5] [E=1e3] [nu=0.22] [rhoS=3] [g=1]
 [bottom=0.4] [np=1] [substeps=32]
 
@@ -30,7 +30,7 @@ import os, sys
 import numpy as np
 sys.path.insert(0, os.path.join(os.environ['MPMFOAM_DIR'], 'bin', 'tools'))
 from csmpmCase import Case, parameters
-a = parameters(dict(n=64, tEnd=1.0, write=0.1, M=3.0, pRatio=0.5,
+a = parameters(dict(n=64, tEnd=1.4, write=0.1, M=3.0, pRatio=0.5,
                     E=1e3, nu=0.22, rhoS=3.0, g=1.0, bottom=0.4, np=1,
                     substeps=32), sys.argv[2:])
 d = sys.argv[1]
