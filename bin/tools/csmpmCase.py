@@ -28,6 +28,12 @@ sys.path.insert(0, os.path.join(os.environ['MPMFOAM_DIR'], 'bin/tools')).
     cloudField(case, t, name)    a cloud field of time t: N x 3 for
                                  vectors (positions: the Cartesian part),
                                  N for scalars, empty if not written
+    runFacts(case)               from log.shockMpmFoam and log.wallTime:
+                                 ranks, steps, halved (the gas's halved
+                                 steps), wall (text), energy (the energy
+                                 audit's total, text; 'nan' without one)
+    lastFragments(solidDat)      fragments and strays at the last time of
+                                 plotCsmpm.py's NAME_solid.dat (text)
 """
 import os, re, sys
 import numpy as np
@@ -129,3 +135,22 @@ def cloudField(case, t, name):
         return np.full(int(m.group(1)), float(m.group(2)))
     body = s[s.index('(') + 1:]
     return np.array([float(c) for c in body.split(')')[0].split()])
+
+
+def runFacts(case):
+    log = open(f'{case}/log.shockMpmFoam').read()
+    m = re.search(r'^nProcs\s*:\s*(\d+)', log, re.M)
+    h = re.search(r'halved steps (\d+)', log)
+    audits = re.findall(r'total (' + NUM + ')',
+                        log.split('CSMPM energy audit')[-1]) \
+        if 'CSMPM energy audit' in log else []
+    return dict(ranks=int(m.group(1)) if m else 1,
+                steps=len(re.findall(r'^Step ', log, re.M)),
+                halved=int(h.group(1)) if h else 0,
+                wall=open(f'{case}/log.wallTime').read().strip(),
+                energy=audits[0] if audits else 'nan')
+
+
+def lastFragments(solidDat):
+    rows = [l.split() for l in open(solidDat) if l[0] not in '# ' and l.strip()]
+    return rows[-1][1], rows[-1][8]

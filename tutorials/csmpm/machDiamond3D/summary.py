@@ -15,7 +15,7 @@ height) and vertical velocity at the end, and the energy audit's total
 import os, re, sys
 import numpy as np
 sys.path.insert(0, os.path.join(os.environ['MPMFOAM_DIR'], 'bin', 'tools'))
-from csmpmCase import NUM as num, cloudField
+from csmpmCase import NUM as num, cloudField, lastFragments, runFacts
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
@@ -61,23 +61,13 @@ ax[0].legend(title='koala (density)', fontsize=8)
 fig.tight_layout()
 fig.savefig('machDiamond3D_koalas.png', dpi=110)
 
-log = open(f'{case}/log.shockMpmFoam').read()
 nx, ny = open(f'{case}/caseInfo').read().split()[:2]
-m = re.search(r'^nProcs\s*:\s*(\d+)', log, re.M)
-ranks = int(m.group(1)) if m else 1
-steps = len(re.findall(r'^Step ', log, re.M))
-m = re.search(r'halved steps (\d+)', log)
-halved = int(m.group(1)) if m else 0
-wall = open(f'{case}/log.wallTime').read().strip()
-solid = [l.split() for l in open('machDiamond3D_solid.dat')
-         if l[0] not in '# ' and l.strip()]
-frag, strays = solid[-1][1], solid[-1][8]
-audits = re.findall(r'total (' + num + ')', log.split('CSMPM energy audit')[-1]) \
-    if 'CSMPM energy audit' in log else []
-total = audits[0] if audits else 'nan'
+r = runFacts(case)
+frag, strays = lastFragments('machDiamond3D_solid.dat')
 print('# nx ny ranks particles steps halved wall_s fragments strays '
       + ' '.join(f'{k}_rise {k}_Uy' for k in names) + ' energy_total')
-print(f'{nx} {ny} {ranks} {len(m0)} {steps} {halved} {wall} {frag} {strays} '
+print(f'{nx} {ny} {r["ranks"]} {len(m0)} {r["steps"]} {r["halved"]} {r["wall"]} '
+      f'{frag} {strays} '
       + ' '.join('%.4g %.4g' % (rows[-1, 2 + 3*k] - rows[0, 2 + 3*k],
                                 rows[-1, 3 + 3*k]) for k in range(3))
-      + f' {total}')
+      + f' {r["energy"]}')

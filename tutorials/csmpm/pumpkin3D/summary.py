@@ -13,7 +13,7 @@ relative to the starting energy).
 import os, re, sys
 import numpy as np
 sys.path.insert(0, os.path.join(os.environ['MPMFOAM_DIR'], 'bin', 'tools'))
-from csmpmCase import NUM as num, cloudField
+from csmpmCase import NUM as num, cloudField, lastFragments, runFacts
 
 centre = np.array([0.5, 0.5, 0.45])
 
@@ -36,30 +36,19 @@ print('# pumpkin n ranks particles steps wall_s fragments strays '
       'energy_total')
 for p in sys.argv[2:]:
     case = f'{run}/{p}'
-    log = open(f'{case}/log.shockMpmFoam').read()
     n = int(open(f'{case}/caseInfo').read().split()[0])
-    ranks = 1
-    m = re.search(r'^nProcs\s*:\s*(\d+)', log, re.M)
-    if m:
-        ranks = int(m.group(1))
-    steps = len(re.findall(r'^Step ', log, re.M))
-    wall = open(f'{case}/log.wallTime').read().strip()
+    r = runFacts(case)
     times = sorted((d for d in os.listdir(case)
                     if re.fullmatch(num, d)
                     and os.path.isdir(f'{case}/{d}/lagrangian')), key=float)
     last = times[-1]
-    rows = [l.split() for l in open(f'pumpkin3D_{p}_solid.dat')
-            if l[0] not in '# ' and l.strip()]
-    frag, strays = rows[-1][1], rows[-1][8]
+    frag, strays = lastFragments(f'pumpkin3D_{p}_solid.dat')
     eps = field(case, last, 'epsilonP')
     if eps is None:
         eps = np.zeros(1)
     r0 = shape(case, times[0])
     r1 = shape(case, last)
-    audits = re.findall(r'total (' + num + ')', log.split('CSMPM energy audit')[-1]) \
-        if 'CSMPM energy audit' in log else []
-    total = audits[0] if audits else 'nan'
     nPart = len(field(case, last, 'mass'))
-    print(f'{p} {n} {ranks} {nPart} {steps} {wall} {frag} {strays} '
+    print(f'{p} {n} {r["ranks"]} {nPart} {r["steps"]} {r["wall"]} {frag} {strays} '
           f'{eps.mean():.4g} {eps.max():.4g} {(eps > 1e-3).mean():.4g} '
-          f'{r0[0]:.5f} {r0[1]:.5f} {r1[0]:.5f} {r1[1]:.5f} {total}')
+          f'{r0[0]:.5f} {r0[1]:.5f} {r1[0]:.5f} {r1[1]:.5f} {r["energy"]}')
